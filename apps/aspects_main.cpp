@@ -1,0 +1,64 @@
+// `aspects`: thin command-line front end. Exit codes: 0 success, 1 failure,
+// 2 usage or input error.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "model.h"
+#include "model_info.h"
+#include "solve_command.h"
+
+using namespace aspects;
+
+int main(int argc, char** argv) {
+  CLI::App app{"Certified generalized aspects of parallel robots (branch and prune)", "aspects"};
+  app.require_subcommand(1);
+
+  std::string info_model;
+  auto* info = app.add_subcommand("info", "Print a robot model: variables, equations, Jacobian patterns");
+  info->add_option("MODEL", info_model, "robot model file (.robot)")->required();
+
+  SolveOptions so;
+  auto* solve = app.add_subcommand("solve", "Compute certified CSNCs and the lower bound on aspects");
+  solve->add_option("MODEL", so.model_path, "robot model file; default: the embedded RRRRR five-bar");
+  solve->add_option("--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1);
+  solve->add_option("--prec", so.prec, "MPFI precision in bits (>= 24)")->default_val(53);
+  solve->add_option("--tau", so.tau, "inflation factor of the Hansen-Sengupta iteration (>= 1)")->default_val(1.01);
+  solve->add_option("--out", so.out_dir, "write summary.json, boxes.csv and aspects.cert here");
+  solve->add_option("--threads", so.threads, "worker threads")->default_val(1);
+  solve->add_flag("--progress", so.progress, "progress on stderr even when it is not a terminal");
+  solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
+  solve->add_flag("--quiet", so.quiet, "print no summary");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "aspects: " << e.what() << "\n(run 'aspects --help' for usage)\n";
+    return 2;
+  }
+
+  try {
+    if (*info) {
+      Model m = load_model(info_model);
+      print_model_info(m, std::cout);
+      return 0;
+    }
+    return run_solve(so);
+  } catch (const ModelError& e) {
+    std::cerr << e.what() << '\n';
+    return 2;
+  } catch (const UsageError& e) {
+    std::cerr << "aspects: " << e.what() << '\n';
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "aspects: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "aspects: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,143 @@
+#include "solve_command.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "atomic_file.h"
+#include "generalized_aspects.h"
+#include "model.h"
+
+namespace aspects {
+
+namespace {
+
+double resident_mib() {
+  std::ifstream in("/proc/self/statm");
+  long pages = 0, rss = 0;
+  in >> pages >> rss;
+  return double(rss) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+void validate(const SolveOptions& o) {
+  if (!(o.eps > 0) || !std::isfinite(o.eps))
+    throw UsageError("--eps must be a positive number (got " + std::to_string(o.eps) + ")");
+  if (!(o.tau >= 1) || !std::isfinite(o.tau))
+    throw UsageError("--tau must be >= 1 (got " + std::to_string(o.tau) + ")");
+  if (o.prec < 24 || o.prec > 4096)
+    throw UsageError("--prec must be between 24 and 4096 bits (got " + std::to_string(o.prec) + ")");
+  if (o.threads < 1) throw UsageError("--threads must be >= 1");
+}
+
+std::string fmt_double(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);  // round-trips exactly
+  return buf;
+}
+
+void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& path) {
+  std::ostringstream os;
+  os << "id,status,csnc,kept";
+  for (const auto& v : m.vars) os << ',' << v.name << "_lo," << v.name << "_hi";
+  os << '\n';
+  for (int b = 0; b < r.boxes.size(); ++b) {
+    int c = r.csnc[b];
+    os << b << ',' << (r.certified[b] ? "solution" : "undecided") << ',' << c << ','
+       << (c >= 0 && c < r.filtered ? 1 : 0);
+    for (int v = 0; v < r.boxes.nv(); ++v)
+      os << ',' << fmt_double(r.boxes.lo(b, v)) << ',' << fmt_double(r.boxes.hi(b, v));
+    os << '\n';
+  }
+  write_file_atomically(path, os.str());
+}
+
+nlohmann::json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r) {
+  nlohmann::json j;
+  j["robot"] = m.name;
+  j["model"] = o.model_path.empty() ? std::string("(embedded default)") : o.model_path;
+  j["eps"] = o.eps;
+  j["precision_bits"] = o.prec;
+  j["tau"] = o.tau;
+  j["threads"] = o.threads;
+  j["time_seconds"] = r.seconds;
+  j["boxes"] = {{"total", r.boxes.size()},
+                {"solution", r.solutions},
+                {"undecided", r.undecided},
+                {"discarded", r.discarded},
+                {"processed", r.processed}};
+  j["links"] = {{"neighbor", r.neighbors.size()}, {"certified", r.certified_links.size()}};
+  long singular = 0;
+  for (int b = 0; b < r.boxes.size(); ++b)
+    if (!r.certified[b] && r.undecided_kind[b] == UndecidedKind::Singular) ++singular;
+  j["boxes"]["undecided_not_p1"] = r.undecided - singular;
+  j["boxes"]["undecided_not_p2"] = singular;
+  int64_t kept_boxes = 0;
+  for (int i = 0; i < r.filtered; ++i) kept_boxes += r.csnc_sizes[i];
+  j["csncs"] = {{"count", r.csnc_sizes.size()},
+                {"filtered", r.filtered},
+                {"filtered_boxes", kept_boxes},
+                {"separated_lower_bound", r.separation.lower_bound},
+                {"sizes", r.csnc_sizes}};
+  nlohmann::json f = nlohmann::json::array();
+  for (const auto& x : r.factors) f.push_back({{"expression", x.text}, {"origin", x.origin}});
+  j["factors"] = f;
+  j["peak_memory_mib"] = resident_mib();
+  return j;
+}
+
+}  // namespace
+
+int run_solve(const SolveOptions& o) {
+  validate(o);
+  set_working_precision(o.prec);
+  Model model = o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
+                                     : load_model(o.model_path);
+
+  AspectsConfig cfg;
+  cfg.eps = o.eps;
+  cfg.tau = o.tau;
+  cfg.keep_proofs = !o.no_cert;
+  bool show = o.progress || isatty(STDERR_FILENO);
+  auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  if (show)
+    cfg.progress = [&](const SearchStats& s) {
+      auto now = std::chrono::steady_clock::now();
+      if (now - last < std::chrono::milliseconds(500)) return;
+      last = now;
+      double t = std::chrono::duration<double>(now - start).count();
+      std::fprintf(stderr, "\r[aspects] %ld boxes processed, %ld solution, %ld undecided, %.0f boxes/s, %.0f MiB   ",
+                   long(s.processed), long(s.solutions), long(s.undecided),
+                   double(s.processed) / std::max(t, 1e-9), resident_mib());
+    };
+
+  AspectsResult r = compute_aspects(model, cfg);
+  if (show) std::fprintf(stderr, "\n");
+
+  if (!o.out_dir.empty()) {
+    std::filesystem::create_directories(o.out_dir);
+    write_boxes_csv(model, r, o.out_dir + "/boxes.csv");
+    write_file_atomically(o.out_dir + "/summary.json", summary_json(model, o, r).dump(2) + "\n");
+  }
+  if (!o.quiet) {
+    std::printf("robot %s  eps %g  precision %ld bits  tau %g\n", model.name.c_str(), o.eps,
+                o.prec, o.tau);
+    std::printf("boxes: %d (%ld solution, %ld undecided)\n", r.boxes.size(), r.solutions,
+                r.undecided);
+    std::printf("links: %zu neighbour pairs, %zu certified\n", r.neighbors.size(),
+                r.certified_links.size());
+    std::printf("CSNCs: %zu, filtered: %d\n", r.csnc_sizes.size(), r.filtered);
+    std::printf("separated lower bound on the number of aspects: %d\n", r.separation.lower_bound);
+    std::printf("time: %.3f s\n", r.seconds);
+  }
+  return 0;
+}
+
+}  // namespace aspects

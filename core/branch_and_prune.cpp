@@ -1,0 +1,64 @@
+#include "branch_and_prune.h"
+
+#include <utility>
+
+namespace aspects {
+
+double split_point(const Interval& x) { return x.mid(); }
+
+void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
+                      SearchStats& stats, const std::function<void()>& on_progress) {
+  struct Item {
+    Box box;
+    int32_t node;
+    int parent_split;
+  };
+  tree.clear();
+  tree.emplace_back();
+  std::vector<Item> stack;  // Extract: depth first
+  stack.push_back({root, 0, -1});
+  while (!stack.empty()) {
+    Item it = std::move(stack.back());
+    stack.pop_back();
+    SearchNode& node = tree[it.node];
+    ++stats.processed;
+    if (on_progress && (stats.processed & 1023) == 0) on_progress();
+    int32_t reason = -1;
+    if (!steps.prune(it.box, reason)) {
+      node.fate = LeafFate::Discarded;
+      node.reason = reason;
+      ++stats.discarded;
+      continue;
+    }
+    int32_t index = -1;
+    if (steps.prove(it.box, index)) {
+      node.fate = LeafFate::Solution;
+      node.leaf = index;
+      ++stats.solutions;
+      continue;
+    }
+    int var = steps.choose_split(it.box, it.parent_split);
+    if (var < 0) {
+      node.fate = LeafFate::Undecided;
+      node.leaf = steps.keep_undecided(it.box);
+      ++stats.undecided;
+      continue;
+    }
+    double p = split_point(it.box[var]);
+    int32_t left = int32_t(tree.size()), right = left + 1;
+    node.split_var = var;
+    node.split = p;
+    node.left = left;
+    node.right = right;  // `node` may dangle after emplace_back: not used below
+    tree.emplace_back();
+    tree.emplace_back();
+    Box hi = it.box;
+    hi[var].set_hull(p, it.box[var].hi_up());
+    it.box[var].set_hull(it.box[var].lo_down(), p);
+    // Push right first so the left half is extracted next (depth first, left to right).
+    stack.push_back({std::move(hi), right, var});
+    stack.push_back({std::move(it.box), left, var});
+  }
+}
+
+}  // namespace aspects

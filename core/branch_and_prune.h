@@ -1,0 +1,54 @@
+// Algorithm 1 (paper 3.1 and 4.2): generic branch and prune over injected steps.
+//   Extract: depth first (a stack); Prune, Prove, Branch: supplied by the caller.
+// The search records its bisection tree: every node's split variable and exact split
+// point, and the fate of every leaf, so coverage can be re-derived (the cells of the
+// leaves partition the initial box; pruning only removes points that are not solutions).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "interval.h"
+
+namespace aspects {
+
+enum class LeafFate : uint8_t { Solution, Undecided, Discarded };
+
+struct SearchNode {
+  int32_t left = -1, right = -1;  // children (internal nodes)
+  int32_t split_var = -1;         // bisected variable (internal nodes)
+  double split = 0;               // exact split point: left has v <= split, right v >= split
+  int32_t leaf = -1;              // leaf: index of the output box in R, or -1 (discarded)
+  LeafFate fate = LeafFate::Discarded;
+  int32_t reason = -1;            // discarded leaf: what refuted it (see Steps::prune)
+};
+
+class BranchAndPruneSteps {
+ public:
+  virtual ~BranchAndPruneSteps() = default;
+  // Prune_c: contracts the box (removing no solution). Returns false when the box
+  // holds no solution; `reason` then says why (recorded in the tree).
+  virtual bool prune(Box& box, int32_t& reason) = 0;
+  // Prove_c: true when the box is a solution box; the step stores it (and its proof)
+  // and returns its output index.
+  virtual bool prove(const Box& box, int32_t& output_index) = 0;
+  // Stores an undecided box (width <= eps, not proved) and returns its output index.
+  virtual int32_t keep_undecided(const Box& box) = 0;
+  // Branch: the variable to bisect, or -1 when every variable is narrower than eps.
+  virtual int choose_split(const Box& box, int parent_split) = 0;
+};
+
+struct SearchStats {
+  std::atomic<long> processed{0}, solutions{0}, undecided{0}, discarded{0};
+};
+
+// Runs Algorithm 1 from `root`. The tree's node 0 is the root.
+void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
+                      SearchStats& stats, const std::function<void()>& on_progress = {});
+
+// Splits at a double inside the interval (the midpoint, rounded): both halves non-empty.
+double split_point(const Interval& x);
+
+}  // namespace aspects

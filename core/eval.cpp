@@ -1,0 +1,371 @@
+#include "eval.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace aspects {
+
+namespace {
+
+mpfr_ptr L(Interval& x) { return &x.get()->left; }
+mpfr_ptr R(Interval& x) { return &x.get()->right; }
+mpfr_srcptr L(const Interval& x) { return &x.get()->left; }
+mpfr_srcptr R(const Interval& x) { return &x.get()->right; }
+
+void set_half_line_pos(Interval& x) {  // [0, +inf]
+  mpfr_set_zero(L(x), 1);
+  mpfr_set_inf(R(x), 1);
+}
+
+void set_unit(Interval& x) {  // [-1, 1]
+  mpfr_set_si(L(x), -1, MPFR_RNDD);
+  mpfr_set_si(R(x), 1, MPFR_RNDU);
+}
+
+// out = x ∩ dom; returns true when dom did not remove anything.
+bool restrict_to(Interval& out, const Interval& x, const Interval& dom) {
+  mpfi_intersect(out.get(), x.get(), dom.get());
+  return mpfi_is_inside(x.get(), dom.get()) > 0;
+}
+
+void hull_into(Interval& acc, bool& acc_empty, const Interval& part) {
+  if (part.empty()) return;
+  if (acc_empty) {
+    mpfi_set(acc.get(), part.get());
+    acc_empty = false;
+  } else {
+    mpfi_union(acc.get(), acc.get(), part.get());
+  }
+}
+
+}  // namespace
+
+Evaluator::Evaluator(const Dag& dag) : dag_(dag), v_(dag.size()) {}
+
+void Evaluator::eval_pow(Interval& out, const Interval& a, int k) {
+  // x^|k| via the endpoints of |x| (even) or x (odd): the power is monotone there, and
+  // each endpoint power is computed as an MPFI product, so the hull encloses the range.
+  int m = k < 0 ? -k : k;
+  bool even = (m % 2) == 0;
+  Interval& base = t1_;
+  if (even)
+    mpfi_abs(base.get(), a.get());
+  else
+    mpfi_set(base.get(), a.get());
+  Interval& lo = t2_;
+  Interval& hi = t3_;
+  mpfi_set_fr(lo.get(), L(base));
+  mpfi_set_fr(hi.get(), R(base));
+  Interval& acc = t4_;
+  mpfi_set(acc.get(), lo.get());
+  for (int i = 1; i < m; ++i) mpfi_mul(acc.get(), acc.get(), lo.get());
+  mpfi_set(lo.get(), acc.get());
+  mpfi_set(acc.get(), hi.get());
+  for (int i = 1; i < m; ++i) mpfi_mul(acc.get(), acc.get(), hi.get());
+  mpfi_union(out.get(), lo.get(), acc.get());
+  if (k < 0) mpfi_inv(out.get(), out.get());
+}
+
+EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
+  EvalStatus status = EvalStatus::Defined;
+  auto partial = [&]() {
+    if (status == EvalStatus::Defined) status = EvalStatus::Partial;
+  };
+  for (int id : program) {
+    const Node& n = dag_.node(id);
+    Interval& r = v_[id];
+    const Interval* a = n.a >= 0 ? &v_[n.a] : nullptr;
+    const Interval* b = n.b >= 0 ? &v_[n.b] : nullptr;
+    if ((a && a->empty()) || (b && b->empty())) {
+      mpfi_set(r.get(), (a && a->empty()) ? a->get() : b->get());  // stays empty
+      status = EvalStatus::Undefined;
+      continue;
+    }
+    switch (n.op) {
+      case Op::Const: mpfi_set(r.get(), dag_.constant_value(id).get()); break;
+      case Op::Var: mpfi_set(r.get(), box[n.k].get()); break;
+      case Op::Add: mpfi_add(r.get(), a->get(), b->get()); break;
+      case Op::Sub: mpfi_sub(r.get(), a->get(), b->get()); break;
+      case Op::Mul:
+        if (n.a == n.b)
+          mpfi_sqr(r.get(), a->get());
+        else
+          mpfi_mul(r.get(), a->get(), b->get());
+        break;
+      case Op::Div:
+        if (b->contains_zero()) partial();
+        mpfi_div(r.get(), a->get(), b->get());
+        break;
+      case Op::Min:
+        mpfr_min(L(r), L(*a), L(*b), MPFR_RNDD);
+        mpfr_min(R(r), R(*a), R(*b), MPFR_RNDU);
+        break;
+      case Op::Max:
+        mpfr_max(L(r), L(*a), L(*b), MPFR_RNDD);
+        mpfr_max(R(r), R(*a), R(*b), MPFR_RNDU);
+        break;
+      case Op::Neg: mpfi_neg(r.get(), a->get()); break;
+      case Op::Sqr: mpfi_sqr(r.get(), a->get()); break;
+      case Op::Pow:
+        if (n.k < 0 && a->contains_zero()) partial();
+        eval_pow(r, *a, n.k);
+        break;
+      case Op::Sqrt:
+      case Op::Log: {
+        set_half_line_pos(t1_);
+        if (!restrict_to(t2_, *a, t1_) || (n.op == Op::Log && a->contains_zero())) partial();
+        if (t2_.empty()) {
+          status = EvalStatus::Undefined;
+          mpfi_set(r.get(), t2_.get());
+          break;
+        }
+        if (n.op == Op::Sqrt)
+          mpfi_sqrt(r.get(), t2_.get());
+        else
+          mpfi_log(r.get(), t2_.get());
+        break;
+      }
+      case Op::Asin:
+      case Op::Acos: {
+        set_unit(t1_);
+        if (!restrict_to(t2_, *a, t1_)) partial();
+        if (t2_.empty()) {
+          status = EvalStatus::Undefined;
+          mpfi_set(r.get(), t2_.get());
+          break;
+        }
+        if (n.op == Op::Asin)
+          mpfi_asin(r.get(), t2_.get());
+        else
+          mpfi_acos(r.get(), t2_.get());
+        break;
+      }
+      case Op::Sin: mpfi_sin(r.get(), a->get()); break;
+      case Op::Cos: mpfi_cos(r.get(), a->get()); break;
+      case Op::Tan:
+        mpfi_tan(r.get(), a->get());
+        if (!r.bounded()) partial();  // a pole of tan lies in the argument
+        break;
+      case Op::Exp: mpfi_exp(r.get(), a->get()); break;
+      case Op::Abs: mpfi_abs(r.get(), a->get()); break;
+      case Op::Atan: mpfi_atan(r.get(), a->get()); break;
+      case Op::Sign: {
+        int s = certain_sign(*a);
+        if (s != 0)
+          mpfi_set_si(r.get(), s);
+        else if (mpfr_zero_p(L(*a)) && mpfr_zero_p(R(*a)))
+          mpfi_set_si(r.get(), 0);
+        else
+          set_unit(r);
+        break;
+      }
+      case Op::Step:
+        if (mpfr_less_p(R(*a), L(*b)))
+          mpfi_set_si(r.get(), 1);
+        else if (mpfr_greater_p(L(*a), R(*b)))
+          mpfi_set_si(r.get(), 0);
+        else
+          mpfi_interv_si(r.get(), 0, 1);
+        break;
+    }
+    if (mpfi_nan_p(r.get())) {
+      // Should not happen after the domain restrictions; stay sound if it does.
+      r.set_entire();
+      partial();
+    }
+  }
+  return status;
+}
+
+// a ∩= {t : sin t ∈ r} (or cos). The preimage is ∪k (b + 2kπ) ∪ (π − b + 2kπ) with
+// b = asin(r) for sin, ∪k (±b + 2kπ) with b = acos(r) for cos; each piece is an MPFI
+// enclosure, so the hull of their intersections with a contains every preimage in a.
+bool Evaluator::project_periodic(Op op, Interval& r, Interval& a) {
+  set_unit(t1_);
+  if (!r.intersect(t1_)) return false;
+  if (!a.bounded()) return true;
+  Interval& base = t1_;
+  if (op == Op::Sin)
+    mpfi_asin(base.get(), r.get());
+  else
+    mpfi_acos(base.get(), r.get());
+  Interval& two_pi = t2_;
+  mpfi_const_pi(two_pi.get());
+  mpfi_mul_2ui(two_pi.get(), two_pi.get(), 1);
+  double period = 6.283185307179586;
+  double kmin = std::floor(a.lo_down() / period) - 1, kmax = std::ceil(a.hi_up() / period) + 1;
+  if (kmax - kmin > 8) return true;  // a spans many periods: nothing to gain
+  Interval& piece = t3_;
+  Interval hull;
+  bool empty = true;
+  for (double k = kmin; k <= kmax; ++k) {
+    for (int branch = 0; branch < 2; ++branch) {
+      if (branch == 0) {
+        mpfi_set(piece.get(), base.get());
+      } else if (op == Op::Sin) {
+        mpfi_const_pi(piece.get());
+        mpfi_sub(piece.get(), piece.get(), base.get());
+      } else {
+        mpfi_neg(piece.get(), base.get());
+      }
+      mpfi_mul_d(t4_.get(), two_pi.get(), k);
+      mpfi_add(piece.get(), piece.get(), t4_.get());
+      mpfi_intersect(piece.get(), piece.get(), a.get());
+      hull_into(hull, empty, piece);
+    }
+  }
+  if (empty) return false;
+  return a.intersect(hull);
+}
+
+bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Interval& target,
+                           Box& box) {
+  if (forward(program, box) == EvalStatus::Undefined) return false;
+  if (!v_[root].intersect(target)) return false;
+  for (auto it = program.rbegin(); it != program.rend(); ++it)
+    if (!backward(*it, box)) return false;
+  return true;
+}
+
+// Projects node id's (already narrowed) value onto its children. Every step intersects
+// a child with a superset of {child values compatible with the parent's value}.
+bool Evaluator::backward(int id, Box& box) {
+  const Node& n = dag_.node(id);
+  Interval& r = v_[id];
+  if (r.empty()) return false;
+  Interval* a = n.a >= 0 ? &v_[n.a] : nullptr;
+  Interval* b = n.b >= 0 ? &v_[n.b] : nullptr;
+  switch (n.op) {
+    case Op::Const:
+      return true;
+    case Op::Var:
+      return box[n.k].intersect(r);
+    case Op::Add:
+      mpfi_sub(t1_.get(), r.get(), b->get());
+      if (!a->intersect(t1_)) return false;
+      mpfi_sub(t1_.get(), r.get(), a->get());
+      return b->intersect(t1_);
+    case Op::Sub:
+      mpfi_add(t1_.get(), r.get(), b->get());
+      if (!a->intersect(t1_)) return false;
+      mpfi_sub(t1_.get(), a->get(), r.get());
+      return b->intersect(t1_);
+    case Op::Mul:
+      if (n.a == n.b) goto sqr;
+      if (!b->contains_zero()) {
+        mpfi_div(t1_.get(), r.get(), b->get());
+        if (!a->intersect(t1_)) return false;
+      }
+      if (!a->contains_zero()) {
+        mpfi_div(t1_.get(), r.get(), a->get());
+        if (!b->intersect(t1_)) return false;
+      }
+      return true;
+    case Op::Div:
+      // a = r*b holds wherever a/b is defined (b != 0).
+      if (r.bounded()) {
+        mpfi_mul(t1_.get(), r.get(), b->get());
+        if (!a->intersect(t1_)) return false;
+      }
+      if (!r.contains_zero() && r.bounded()) {
+        mpfi_div(t1_.get(), a->get(), r.get());
+        if (!b->intersect(t1_)) return false;
+      }
+      return true;
+    case Op::Min:  // min(a, b) >= lo(r) forces both >= lo(r)
+      mpfr_set(L(t1_), L(r), MPFR_RNDD);
+      mpfr_set_inf(R(t1_), 1);
+      return a->intersect(t1_) && b->intersect(t1_);
+    case Op::Max:
+      mpfr_set_inf(L(t1_), -1);
+      mpfr_set(R(t1_), R(r), MPFR_RNDU);
+      return a->intersect(t1_) && b->intersect(t1_);
+    case Op::Neg:
+      mpfi_neg(t1_.get(), r.get());
+      return a->intersect(t1_);
+    case Op::Sqr:
+    sqr: {
+      set_half_line_pos(t1_);
+      if (!r.intersect(t1_)) return false;
+      mpfi_sqrt(t1_.get(), r.get());  // [sqrt lo, sqrt hi]
+      mpfi_intersect(t2_.get(), a->get(), t1_.get());
+      mpfi_neg(t1_.get(), t1_.get());
+      mpfi_intersect(t3_.get(), a->get(), t1_.get());
+      bool e = true;
+      hull_into(t4_, e, t2_);
+      hull_into(t4_, e, t3_);
+      if (e) return false;
+      mpfi_set(a->get(), t4_.get());
+      return true;
+    }
+    case Op::Pow: {
+      if (n.k < 0) return true;  // weak but sound
+      unsigned long k = (unsigned long)n.k;
+      bool even = (k % 2) == 0;
+      if (even) {
+        set_half_line_pos(t1_);
+        if (!r.intersect(t1_)) return false;
+      }
+      mpfr_rootn_ui(L(t1_), L(r), k, MPFR_RNDD);
+      mpfr_rootn_ui(R(t1_), R(r), k, MPFR_RNDU);
+      if (!even) return a->intersect(t1_);
+      mpfi_intersect(t2_.get(), a->get(), t1_.get());
+      mpfi_neg(t1_.get(), t1_.get());
+      mpfi_intersect(t3_.get(), a->get(), t1_.get());
+      bool e = true;
+      hull_into(t4_, e, t2_);
+      hull_into(t4_, e, t3_);
+      if (e) return false;
+      mpfi_set(a->get(), t4_.get());
+      return true;
+    }
+    case Op::Sqrt:
+      set_half_line_pos(t1_);
+      if (!r.intersect(t1_)) return false;
+      mpfi_sqr(t1_.get(), r.get());
+      return a->intersect(t1_);
+    case Op::Exp:
+      set_half_line_pos(t1_);
+      if (!r.intersect(t1_)) return false;
+      mpfi_log(t1_.get(), r.get());
+      return a->intersect(t1_);
+    case Op::Log:
+      mpfi_exp(t1_.get(), r.get());
+      return a->intersect(t1_);
+    case Op::Abs: {
+      set_half_line_pos(t1_);
+      if (!r.intersect(t1_)) return false;
+      mpfi_intersect(t2_.get(), a->get(), r.get());
+      mpfi_neg(t1_.get(), r.get());
+      mpfi_intersect(t3_.get(), a->get(), t1_.get());
+      bool e = true;
+      hull_into(t4_, e, t2_);
+      hull_into(t4_, e, t3_);
+      if (e) return false;
+      mpfi_set(a->get(), t4_.get());
+      return true;
+    }
+    case Op::Asin:  // asin is a bijection [-1,1] -> [-pi/2, pi/2]
+      mpfi_sin(t1_.get(), r.get());
+      return a->intersect(t1_);
+    case Op::Acos:
+      mpfi_cos(t1_.get(), r.get());
+      return a->intersect(t1_);
+    case Op::Atan:
+      mpfi_tan(t1_.get(), r.get());
+      if (!t1_.bounded() || mpfi_nan_p(t1_.get())) return true;
+      return a->intersect(t1_);
+    case Op::Sin:
+    case Op::Cos:
+      return project_periodic(n.op, r, *a);
+    case Op::Tan:
+      // The range check done by the parent's intersection is the (sound) projection kept.
+      return true;
+    case Op::Sign:
+    case Op::Step:
+      return true;
+  }
+  throw std::logic_error("backward: unknown op");
+}
+
+}  // namespace aspects

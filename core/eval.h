@@ -1,0 +1,43 @@
+// Interval evaluation of the expression DAG (forward) and HC4-Revise (backward
+// projection). Forward: value(id) encloses the node's range over the points of the box
+// where the node is defined. Backward: hc4_revise never removes a point of the box at
+// which the constraint holds (and is defined).
+#pragma once
+
+#include <vector>
+
+#include "expr.h"
+#include "interval.h"
+
+namespace aspects {
+
+enum class EvalStatus {
+  Defined,    // every node of the program is defined on the whole box
+  Partial,    // some node is undefined somewhere in the box (e.g. sqrt of [-1, 4])
+  Undefined,  // some node is defined nowhere in the box: no point of the box is feasible
+};
+
+class Evaluator {
+ public:
+  explicit Evaluator(const Dag& dag);
+
+  // Evaluates the nodes of `program` (a Dag::closure, increasing ids) on the box.
+  EvalStatus forward(const std::vector<int>& program, const Box& box);
+  const Interval& value(int id) const { return v_[id]; }
+
+  // Contracts `box` with respect to node(root) ∈ target. Returns false when the box
+  // holds no point satisfying the constraint (the box is then unspecified).
+  bool hc4_revise(const std::vector<int>& program, int root, const Interval& target, Box& box);
+
+ private:
+  bool backward(int id, Box& box);
+  bool project_periodic(Op op, Interval& r, Interval& a);
+  void eval_pow(Interval& out, const Interval& a, int k);
+
+  const Dag& dag_;
+  std::vector<Interval> v_;
+  Interval t1_, t2_, t3_;
+  Interval t4_;  // its endpoints double as mpfr scratch
+};
+
+}  // namespace aspects

@@ -1,0 +1,88 @@
+#include "interval.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace aspects {
+
+void set_working_precision(long bits) { mpfr_set_default_prec(bits); }
+long working_precision() { return mpfr_get_default_prec(); }
+
+bool Interval::from_string(Interval& out, const std::string& text) {
+  // mpfi_set_str rounds the left end down and the right end up.
+  if (mpfi_set_str(out.v_, text.c_str(), 10) != 0) return false;
+  return !out.empty();
+}
+
+double Interval::lo_down() const {
+  mpfr_t t;
+  mpfr_init2(t, mpfi_get_prec(v_));
+  mpfi_get_left(t, v_);
+  double d = mpfr_get_d(t, MPFR_RNDD);
+  mpfr_clear(t);
+  return d;
+}
+
+double Interval::hi_up() const {
+  mpfr_t t;
+  mpfr_init2(t, mpfi_get_prec(v_));
+  mpfi_get_right(t, v_);
+  double d = mpfr_get_d(t, MPFR_RNDU);
+  mpfr_clear(t);
+  return d;
+}
+
+double Interval::mid() const {
+  double lo = lo_down(), hi = hi_up();
+  if (std::isinf(lo) || std::isinf(hi)) {
+    if (std::isinf(lo) && std::isinf(hi)) return 0.0;
+    return std::isinf(lo) ? hi : lo;
+  }
+  double m = lo + 0.5 * (hi - lo);
+  if (!(m >= lo)) m = lo;
+  if (!(m <= hi)) m = hi;
+  return m;
+}
+
+double Interval::width_up() const {
+  mpfr_t t;
+  mpfr_init2(t, mpfi_get_prec(v_));
+  mpfi_diam_abs(t, v_);  // rounded up by MPFI
+  double d = mpfr_get_d(t, MPFR_RNDU);
+  mpfr_clear(t);
+  return d;
+}
+
+bool Interval::strictly_contains(const Interval& o) const {
+  return mpfi_is_strictly_inside(o.v_, v_) > 0;
+}
+
+bool Interval::overlaps(const Interval& o) const {
+  // Closed intervals share a point iff neither lies strictly beyond the other.
+  return mpfr_lessequal_p(&v_->left, &o.v_->right) && mpfr_lessequal_p(&o.v_->left, &v_->right);
+}
+
+bool Interval::intersect(const Interval& o) {
+  mpfi_intersect(v_, v_, o.v_);
+  return !empty();
+}
+
+void Interval::set_entire() {
+  mpfr_set_inf(&v_->left, -1);
+  mpfr_set_inf(&v_->right, 1);
+}
+
+std::string Interval::str() const {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "[%.17g, %.17g]", lo_down(), hi_up());
+  return buf;
+}
+
+double box_width(const Box& b) {
+  double w = 0;
+  for (const auto& x : b) w = std::max(w, x.width_up());
+  return w;
+}
+
+}  // namespace aspects

@@ -1,0 +1,76 @@
+// A robot model: pose variables x, command variables q, n equations f(x, q) = 0, and
+// the symbolic Jacobians Fx = df/dx, Fq = df/dq, all as nodes of one expression DAG.
+// Parsed from the model language documented in robots/README.md.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "expr.h"
+#include "interval.h"
+
+namespace aspects {
+
+// A model error, printed as "FILE:LINE:COL: error: MESSAGE".
+class ModelError : public std::runtime_error {
+ public:
+  ModelError(const std::string& file, int line, int col, const std::string& msg)
+      : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                           ": error: " + msg),
+        line_(line), col_(col), message_(msg) {}
+  int line() const { return line_; }
+  int col() const { return col_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  int line_, col_;
+  std::string message_;
+};
+
+enum class VarKind { Pose, Command };
+
+struct Variable {
+  std::string name;
+  VarKind kind;
+  Interval domain;  // outward enclosure of the declared domain
+  bool periodic = false;
+  int line = 0;
+};
+
+// A factor of det Fx · det Fq used to separate aspects by sign (paper 4.4.2).
+struct Factor {
+  int node;             // DAG node
+  std::string text;     // printable expression
+  std::string origin;   // "det Fx", "det Fq", "diagonal of Fq", "user (line N)"
+};
+
+struct Model {
+  std::string name;
+  std::string file;     // path as given, for messages
+  std::string source;   // the model text, verbatim
+  Dag dag;
+  std::vector<Variable> vars;  // model order (order of declaration)
+  std::vector<int> pose;       // indices into vars
+  std::vector<int> command;
+  std::vector<int> equations;  // node of lhs - rhs
+  std::vector<std::string> equation_text;
+  std::vector<int> user_factors;  // nodes, from `factor EXPR`
+  std::vector<int> user_factor_lines;
+  std::vector<std::string> user_factor_text;
+  std::vector<int> fx, fq;  // n×n row-major nodes: d eq_i / d pose_j, d eq_i / d command_j
+
+  int n() const { return int(equations.size()); }
+  std::vector<std::string> var_names() const;
+  Box initial_box() const;
+};
+
+// Parses model text. `file` is used in error messages only.
+Model parse_model(const std::string& text, const std::string& file);
+// Reads and parses a file; a missing file is a ModelError at 0:0.
+Model load_model(const std::string& path);
+
+// The paper's RRRRR five-bar (Section 5.2), the default robot of `aspects solve`.
+extern const char* const kDefaultModelText;
+
+}  // namespace aspects

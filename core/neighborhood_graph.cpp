@@ -1,0 +1,147 @@
+#include "neighborhood_graph.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aspects {
+
+uint32_t pack_shift(const std::vector<int>& k) {
+  uint32_t c = 0;
+  for (size_t v = 0; v < k.size(); ++v) c |= uint32_t(k[v] + 1) << (2 * v);
+  return c;
+}
+
+namespace {
+
+// Hull of the output boxes below each tree node: a reported box may leave its cell
+// (the Newton iterate can shift), so the cells alone cannot guide the search.
+std::vector<double> subtree_hulls(const std::vector<SearchNode>& tree, const BoxStore& R) {
+  const int nv = R.nv();
+  std::vector<double> h(tree.size() * 2 * nv);
+  std::vector<uint8_t> empty(tree.size(), 1);
+  // Children have larger ids than their parent: a reverse sweep is bottom-up.
+  for (size_t i = tree.size(); i-- > 0;) {
+    const SearchNode& s = tree[i];
+    double* hi = &h[i * 2 * nv];
+    if (s.split_var < 0) {
+      if (s.leaf < 0) continue;
+      for (int v = 0; v < nv; ++v) {
+        hi[2 * v] = R.lo(s.leaf, v);
+        hi[2 * v + 1] = R.hi(s.leaf, v);
+      }
+      empty[i] = 0;
+      continue;
+    }
+    for (int c : {s.left, s.right}) {
+      if (empty[c]) continue;
+      const double* hc = &h[size_t(c) * 2 * nv];
+      for (int v = 0; v < nv; ++v) {
+        if (empty[i] || hc[2 * v] < hi[2 * v]) hi[2 * v] = hc[2 * v];
+        if (empty[i] || hc[2 * v + 1] > hi[2 * v + 1]) hi[2 * v + 1] = hc[2 * v + 1];
+      }
+      if (empty[i]) {
+        for (int v = 0; v < nv; ++v) {
+          hi[2 * v] = hc[2 * v];
+          hi[2 * v + 1] = hc[2 * v + 1];
+        }
+        empty[i] = 0;
+      }
+    }
+  }
+  for (size_t i = 0; i < tree.size(); ++i)
+    if (empty[i])  // no output below: a hull that meets nothing
+      for (int v = 0; v < nv; ++v) {
+        h[i * 2 * nv + 2 * v] = INFINITY;
+        h[i * 2 * nv + 2 * v + 1] = -INFINITY;
+      }
+  return h;
+}
+
+struct Query {
+  const std::vector<SearchNode>& tree;
+  const BoxStore& R;
+  const std::vector<double>& hull;
+  std::vector<double> lo, hi;  // query box (shifted), outward
+  int self;
+  uint32_t code;
+  std::vector<NeighborPair>* out;
+
+  void visit(int32_t node) {
+    const SearchNode& s = tree[node];
+    const int nv = R.nv();
+    const double* h = &hull[size_t(node) * 2 * nv];
+    for (int v = 0; v < nv; ++v)
+      if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
+    if (s.split_var < 0) {
+      if (s.leaf < 0 || s.leaf <= self) return;
+      out->push_back({self, s.leaf, code});
+      return;
+    }
+    visit(s.left);
+    visit(s.right);
+  }
+};
+
+}  // namespace
+
+std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
+                                         const std::vector<bool>& periodic, const Box& domain) {
+  const int nv = R.nv();
+  std::vector<int> pvars;
+  for (int v = 0; v < nv; ++v)
+    if (periodic[v]) pvars.push_back(v);
+  Interval two_pi, t;
+  mpfi_const_pi(two_pi.get());
+  mpfi_mul_ui(two_pi.get(), two_pi.get(), 2);
+
+  std::vector<NeighborPair> out;
+  std::vector<double> hull = subtree_hulls(tree, R);
+  Query q{tree, R, hull, std::vector<double>(nv), std::vector<double>(nv), 0, 0, &out};
+  int combos = 1;
+  for (size_t i = 0; i < pvars.size(); ++i) combos *= 3;
+  std::vector<int> k(nv, 0);
+  for (int id = 0; id < R.size(); ++id) {
+    for (int c = 0; c < combos; ++c) {
+      int code = c;
+      bool useful = true;
+      std::fill(k.begin(), k.end(), 0);
+      for (int v : pvars) {
+        k[v] = code % 3 - 1;
+        code /= 3;
+      }
+      for (int v = 0; v < nv && useful; ++v) {
+        if (k[v] == 0) {
+          q.lo[v] = R.lo(id, v);
+          q.hi[v] = R.hi(id, v);
+          continue;
+        }
+        // Query box a + 2πk meets b  ⇔  b − 2πk meets a: record −k for b.
+        mpfi_mul_si(t.get(), two_pi.get(), k[v]);
+        mpfi_add_d(t.get(), t.get(), R.lo(id, v));
+        q.lo[v] = t.lo_down();
+        mpfi_mul_si(t.get(), two_pi.get(), k[v]);
+        mpfi_add_d(t.get(), t.get(), R.hi(id, v));
+        q.hi[v] = t.hi_up();
+        if (q.hi[v] < domain[v].lo_down() || q.lo[v] > domain[v].hi_up()) useful = false;
+      }
+      if (!useful) continue;
+      std::vector<int> neg(nv);
+      for (int v = 0; v < nv; ++v) neg[v] = -k[v];
+      q.self = id;
+      q.code = pack_shift(neg);
+      q.visit(0);
+    }
+  }
+  // A pair met through two shifts (boxes spanning a whole period) is kept once.
+  std::sort(out.begin(), out.end(), [](const NeighborPair& x, const NeighborPair& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.shift_code < y.shift_code;
+  });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const NeighborPair& x, const NeighborPair& y) {
+                          return x.a == y.a && x.b == y.b;
+                        }),
+            out.end());
+  return out;
+}
+
+}  // namespace aspects

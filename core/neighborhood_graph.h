@@ -1,0 +1,30 @@
+// Neighbourhood graph (R, M) of paper 4.3.1: two output boxes are neighbours when they
+// may share a point, modulo 2π on periodic variables. M may contain
+// pairs that only touch up to rounding. The search uses the hulls of the output boxes
+// below each tree node (a bounding-volume hierarchy over the bisection tree).
+// Extra: extra pairs in M are sound (they can only merge
+// components of the separation, lowering the bound), missing pairs would not be.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "box_store.h"
+#include "branch_and_prune.h"
+
+namespace aspects {
+
+struct NeighborPair {
+  int32_t a, b;  // output box ids, a < b
+  // Per variable v, k_v ∈ {-1, 0, 1} packed in 2 bits: box b shifted by 2π·k meets a.
+  uint32_t shift_code = 0;
+  int shift(int v) const { return int((shift_code >> (2 * v)) & 3u) - 1; }
+};
+
+// Packs a shift vector (at most 16 variables).
+uint32_t pack_shift(const std::vector<int>& k);
+
+std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
+                                         const std::vector<bool>& periodic, const Box& domain);
+
+}  // namespace aspects

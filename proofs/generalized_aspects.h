@@ -1,0 +1,68 @@
+// The whole method of paper Section 4: branch and prune with Prove = P1 ∧ P2 (4.2),
+// neighbourhood graph and certified links P3 (4.3), CSNCs and filtering (4.4.1),
+// separation and the lower bound (4.4.2).
+//
+// Guarantees of the result:
+//  - every solution box S: ∀x ∈ [x] ∃! q ∈ [q] f(x,q) = 0 (P1) and Fx, Fq nonsingular
+//    on the box (P2);
+//  - every certified link: the two boxes share a solution (P3);
+//  - S ∪ U covers every solution of f = 0 in the initial domain (coverage), which the
+//    lower bound relies on.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "box_store.h"
+#include "branch_and_prune.h"
+#include "components.h"
+#include "hansen_sengupta.h"
+#include "link.h"
+#include "model.h"
+#include "neighborhood_graph.h"
+#include "separation.h"
+
+namespace aspects {
+
+struct AspectsConfig {
+  double eps = 0.1;
+  double tau = 1.01;
+  int max_newton_iterations = 8;
+  bool keep_proofs = true;  // keep P1/P2/P3 data for the certificate
+  std::function<void(const SearchStats&)> progress;
+};
+
+enum class UndecidedKind : uint8_t {
+  NoExistence = 0,  // P1 not proved (red in the paper's figures)
+  Singular = 1,     // P1 proved, P2 not (black)
+};
+
+// What a solution box's proofs used (recorded in the certificate).
+struct SolutionProof {
+  ExistenceProof existence;      // iteration (9) from the cell
+  std::vector<double> cx, cq;    // preconditioners of the P2 tests of Fx and Fq
+};
+
+struct AspectsResult {
+  std::vector<Factor> factors;
+  BoxStore boxes;                       // R = S ∪ U, output order
+  std::vector<uint8_t> certified;       // 1: solution box
+  std::vector<UndecidedKind> undecided_kind;
+  std::vector<int8_t> signs;            // factors.size() per box
+  std::vector<int32_t> proof_of;        // box -> index in proofs, or -1
+  std::vector<SolutionProof> proofs;
+  std::vector<SearchNode> tree;
+  std::vector<NeighborPair> neighbors;  // M
+  std::vector<int32_t> certified_links; // indices into neighbors: N
+  std::vector<LinkProof> link_proofs;   // parallel to certified_links (if kept)
+  std::vector<int32_t> csnc;            // box -> CSNC (decreasing size), -1 for undecided
+  std::vector<int64_t> csnc_sizes;
+  int filtered = 0;
+  SeparationResult separation;
+  long solutions = 0, undecided = 0, discarded = 0, processed = 0;
+  double seconds = 0;
+};
+
+AspectsResult compute_aspects(Model& model, const AspectsConfig& config);
+
+}  // namespace aspects

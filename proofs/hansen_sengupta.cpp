@@ -1,0 +1,116 @@
+#include "hansen_sengupta.h"
+
+#include <cmath>
+
+#include "strong_regularity.h"
+
+namespace aspects {
+
+void round_out_to_doubles(Interval& x) { x.set_hull(x.lo_down(), x.hi_up()); }
+
+HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
+                         std::vector<Interval>& image, HsWorkspace& ws) {
+  const Model& m = ev.model();
+  const int n = m.n();
+  // Mean-value form around a point of [q]: f(x,q) = f(x,q̌) + Fq(x,ξ)(q − q̌).
+  ws.mid_box = box;
+  std::vector<double> qmid(n);
+  for (int j = 0; j < n; ++j) {
+    qmid[j] = box[m.command[j]].mid();
+    if (!std::isfinite(qmid[j])) return HsStatus::Failed;
+    ws.mid_box[m.command[j]].set_point(qmid[j]);
+  }
+  if (ev.equations(ws.mid_box, ws.f0) != EvalStatus::Defined) return HsStatus::Failed;
+  if (ev.jacobian_q(box, ws.J) != EvalStatus::Defined) return HsStatus::Failed;
+  if (!approximate_inverse(ws.J, ws.C)) return HsStatus::Failed;
+  if (ws.A.rows() != n) ws.A = IMatrix(n, n);
+  ws.b.resize(n);
+  for (int i = 0; i < n; ++i) {
+    mpfi_set_si(ws.b[i].get(), 0);
+    for (int k = 0; k < n; ++k) {
+      mpfi_mul_d(ws.t1.get(), ws.f0[k].get(), ws.C[size_t(i) * n + k]);
+      mpfi_add(ws.b[i].get(), ws.b[i].get(), ws.t1.get());
+    }
+    for (int j = 0; j < n; ++j) {
+      Interval& a = ws.A(i, j);
+      mpfi_set_si(a.get(), 0);
+      for (int k = 0; k < n; ++k) {
+        mpfi_mul_d(ws.t1.get(), ws.J(k, j).get(), ws.C[size_t(i) * n + k]);
+        mpfi_add(a.get(), a.get(), ws.t1.get());
+      }
+    }
+  }
+  image.resize(n);
+  // Gauss–Seidel: component j < i uses its new value (intersected with the box).
+  std::vector<Interval>& y = image;
+  for (int i = 0; i < n; ++i) {
+    if (ws.A(i, i).contains_zero()) return HsStatus::Failed;
+    mpfi_set(ws.t2.get(), ws.b[i].get());
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const Interval& qj = box[m.command[j]];
+      if (j < i) {
+        mpfi_intersect(ws.t1.get(), y[j].get(), qj.get());
+        if (ws.t1.empty()) return HsStatus::NoSolution;
+      } else {
+        mpfi_set(ws.t1.get(), qj.get());
+      }
+      mpfi_sub_d(ws.t1.get(), ws.t1.get(), qmid[j]);
+      mpfi_mul(ws.t1.get(), ws.t1.get(), ws.A(i, j).get());
+      mpfi_add(ws.t2.get(), ws.t2.get(), ws.t1.get());
+    }
+    mpfi_div(ws.t2.get(), ws.t2.get(), ws.A(i, i).get());
+    mpfi_d_sub(y[i].get(), qmid[i], ws.t2.get());
+    if (!y[i].bounded() || y[i].empty()) return HsStatus::Failed;
+    if (intersect) {
+      if (!y[i].intersect(box[m.command[i]])) return HsStatus::NoSolution;
+    } else {
+      mpfi_intersect(ws.t1.get(), y[i].get(), box[m.command[i]].get());
+      if (ws.t1.empty()) return HsStatus::NoSolution;
+    }
+  }
+  return HsStatus::Ok;
+}
+
+bool prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
+                     ExistenceProof& proof, HsWorkspace& ws) {
+  const Model& m = ev.model();
+  const int n = m.n();
+  Box work = box;
+  proof.inflated.resize(n);
+  std::vector<Interval> y;
+  double start_width = 0;
+  for (int j = 0; j < n; ++j) start_width = std::max(start_width, box[m.command[j]].width_up());
+  for (int k = 0; k < max_iterations; ++k) {
+    // [q̃k] = mid + τ([qk] − mid): a choice, made in double and rounded outward.
+    for (int j = 0; j < n; ++j) {
+      Interval& q = work[m.command[j]];
+      double lo = q.lo_down(), hi = q.hi_up(), mid = q.mid();
+      double nlo = mid - tau * (mid - lo), nhi = mid + tau * (hi - mid);
+      nlo = std::nextafter(std::min(nlo, lo), -INFINITY);
+      nhi = std::nextafter(std::max(nhi, hi), INFINITY);
+      q.set_hull(nlo, nhi);
+      proof.inflated[j] = q;
+    }
+    HsStatus s = hansen_sengupta(ev, work, false, y, ws);
+    if (s != HsStatus::Ok) return false;
+    bool inside = true;
+    double width = 0;
+    for (int j = 0; j < n; ++j) {
+      round_out_to_doubles(y[j]);
+      if (!proof.inflated[j].strictly_contains(y[j])) inside = false;
+      width = std::max(width, y[j].width_up());
+    }
+    if (inside) {
+      proof.image = y;
+      proof.C = ws.C;
+      proof.iterations = k + 1;
+      return true;
+    }
+    if (!(width <= 4 * start_width + 1e-300)) return false;  // diverging
+    for (int j = 0; j < n; ++j) work[m.command[j]] = y[j];
+  }
+  return false;
+}
+
+}  // namespace aspects

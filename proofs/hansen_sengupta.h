@@ -1,0 +1,54 @@
+// Property P1 (paper 4.2.1, existence proof): the parametric Hansen–Sengupta operator
+// on f([x], q) = 0, with the pose [x] as interval parameter and the command q unknown.
+//
+// H([x],[q]) = mid[q] − GS(C·Fq([x],[q]), C·f([x], mid[q])) (interval Gauss–Seidel)
+// with C ≈ mid(Fq)^-1 chosen in double. If ∅ ≠ H([x],[q̃]) ⊆ int [q̃] then
+//   ∀x ∈ [x], ∃! q ∈ [q̃] with f(x, q) = 0, and that q lies in H([x],[q̃]).
+// prove_existence runs iteration (9): inflate by τ, apply H without intersecting, and
+// stop at the first strict inclusion.
+#pragma once
+
+#include <vector>
+
+#include "interval.h"
+#include "model_eval.h"
+
+namespace aspects {
+
+enum class HsStatus {
+  Ok,        // image computed
+  NoSolution,  // (with intersection) the box holds no zero of f(x,·) for any x ∈ [x]
+  Failed,    // operator not applicable: f undefined somewhere, (C·Fq)_ii ∋ 0, singular mid
+};
+
+struct HsWorkspace {
+  std::vector<Interval> f0;
+  IMatrix J, A;
+  std::vector<Interval> b;
+  std::vector<double> C;
+  Box mid_box;
+  Interval t1, t2;
+};
+
+// One Hansen–Sengupta sweep on the command part of `box` (model order). The image of
+// command j is written to image[j]. With `intersect`, each component is intersected
+// with the box (the contracting operator used by Prune). C is left in ws.C.
+HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
+                         std::vector<Interval>& image, HsWorkspace& ws);
+
+struct ExistenceProof {
+  std::vector<Interval> inflated;  // [q̃k], double endpoints
+  std::vector<Interval> image;     // [q(k+1)] = H([x],[q̃k]) rounded outward to doubles
+  std::vector<double> C;           // preconditioner of the successful sweep
+  int iterations = 0;
+};
+
+// Iteration (9) from the command part of `box`. True when the strict inclusion holds;
+// `proof` then records the iterate, its image and the preconditioner.
+bool prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
+                     ExistenceProof& proof, HsWorkspace& ws);
+
+// Rounds both ends outward to doubles (a superset; identity at 53 bits).
+void round_out_to_doubles(Interval& x);
+
+}  // namespace aspects

@@ -1,0 +1,9 @@
+# RRRRR five-bar, paper Section 5.2 (architecture parameters of [5]).
+# Anchors A = (0, 0) and B = (9, 0); proximal links 8 and 5, distal links 5 and 8.
+robot RRRRR
+pose    x1 in [-20, 20]
+pose    x2 in [-20, 20]
+command q1 in [-pi, pi] periodic
+command q2 in [-pi, pi] periodic
+equation (x1 - 8*cos(q1))^2 + (x2 - 8*sin(q1))^2 - 25 = 0
+equation (x1 - 9 - 5*cos(q2))^2 + (x2 - 5*sin(q2))^2 - 64 = 0

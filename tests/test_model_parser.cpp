@@ -1,0 +1,317 @@
+// The model language (core/model_parser.cpp): the five robots of robots/ parse into
+// the expected models, and every error is a ModelError "FILE:LINE:COL: error: MESSAGE"
+// pointing at the right line and column.
+#include <gtest/gtest.h>
+
+#include <mpfr.h>
+
+#include <string>
+#include <vector>
+
+#include "model.h"
+#include "test_util.h"
+
+using namespace aspects;
+using aspects_test::interval_str;
+
+namespace {
+
+std::string robots(const char* file) { return std::string(ASPECTS_ROBOTS_DIR) + "/" + file; }
+
+class ParserTest : public ::testing::Test {
+ protected:
+  void SetUp() override { set_working_precision(53); }
+};
+
+// Domain exactly [lo, hi] (both doubles).
+void expect_domain(const Variable& v, double lo, double hi) {
+  EXPECT_EQ(mpfr_cmp_d(&v.domain.get()->left, lo), 0) << v.name << " " << interval_str(v.domain);
+  EXPECT_EQ(mpfr_cmp_d(&v.domain.get()->right, hi), 0) << v.name << " " << interval_str(v.domain);
+}
+
+// Domain is the tight outward enclosure of [-pi, pi].
+void expect_minus_pi_pi(const Variable& v) {
+  mpfr_t pi;
+  mpfr_init2(pi, 256);
+  mpfr_const_pi(pi, MPFR_RNDN);
+  mpfr_srcptr lo = &v.domain.get()->left, hi = &v.domain.get()->right;
+  EXPECT_GE(mpfr_cmp(hi, pi), 0) << v.name << " " << interval_str(v.domain, 25);
+  EXPECT_LE(mpfr_cmp_d(hi, 3.1415926535897936), 0) << v.name;
+  mpfr_neg(pi, pi, MPFR_RNDN);
+  EXPECT_LE(mpfr_cmp(lo, pi), 0) << v.name << " " << interval_str(v.domain, 25);
+  EXPECT_GE(mpfr_cmp_d(lo, -3.1415926535897936), 0) << v.name;
+  mpfr_clear(pi);
+}
+
+struct VarWant {
+  const char* name;
+  VarKind kind;
+  bool periodic;
+};
+
+void expect_vars(const Model& m, const std::vector<VarWant>& want) {
+  ASSERT_EQ(m.vars.size(), want.size());
+  std::vector<int> pose, command;
+  for (size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(m.vars[i].name, want[i].name);
+    EXPECT_EQ(m.vars[i].kind, want[i].kind) << want[i].name;
+    EXPECT_EQ(m.vars[i].periodic, want[i].periodic) << want[i].name;
+    (want[i].kind == VarKind::Pose ? pose : command).push_back(int(i));
+  }
+  EXPECT_EQ(m.pose, pose);
+  EXPECT_EQ(m.command, command);
+}
+
+constexpr VarKind P = VarKind::Pose;
+constexpr VarKind C = VarKind::Command;
+
+TEST_F(ParserTest, Prrp) {
+  Model m = load_model(robots("prrp.robot"));
+  EXPECT_EQ(m.name, "PRRP");
+  EXPECT_EQ(m.n(), 1);
+  EXPECT_EQ(m.file, robots("prrp.robot"));
+  expect_vars(m, {{"x", P, false}, {"q", C, false}});
+  expect_domain(m.vars[0], -2, 2);
+  expect_domain(m.vars[1], -2, 2);
+  EXPECT_EQ(m.vars[0].line, 7);
+  EXPECT_EQ(m.vars[1].line, 8);
+  ASSERT_EQ(m.equation_text.size(), 1u);
+  EXPECT_TRUE(m.user_factors.empty());
+  EXPECT_EQ(m.fx.size(), 1u);
+  EXPECT_EQ(m.fq.size(), 1u);
+}
+
+TEST_F(ParserTest, Rprpr) {
+  Model m = load_model(robots("rprpr.robot"));
+  EXPECT_EQ(m.name, "RPRPR");
+  EXPECT_EQ(m.n(), 2);
+  expect_vars(m, {{"x1", P, false}, {"x2", P, false}, {"q1", C, false}, {"q2", C, false}});
+  expect_domain(m.vars[0], -20, 20);
+  expect_domain(m.vars[1], -20, 20);
+  expect_domain(m.vars[2], 2, 6);
+  expect_domain(m.vars[3], 4, 9);
+  EXPECT_EQ(m.equation_text.size(), 2u);
+}
+
+TEST_F(ParserTest, Rrrrr) {
+  Model m = load_model(robots("rrrrr.robot"));
+  EXPECT_EQ(m.name, "RRRRR");
+  EXPECT_EQ(m.n(), 2);
+  expect_vars(m, {{"x1", P, false}, {"x2", P, false}, {"q1", C, true}, {"q2", C, true}});
+  expect_domain(m.vars[0], -20, 20);
+  expect_domain(m.vars[1], -20, 20);
+  expect_minus_pi_pi(m.vars[2]);
+  expect_minus_pi_pi(m.vars[3]);
+}
+
+TEST_F(ParserTest, ThreeRpr) {
+  Model m = load_model(robots("3rpr.robot"));
+  EXPECT_EQ(m.name, "3-RPR");
+  EXPECT_EQ(m.n(), 3);
+  expect_vars(m, {{"x1", P, false}, {"x2", P, false}, {"x3", P, true},
+                  {"q1", C, false}, {"q2", C, false}, {"q3", C, false}});
+  expect_domain(m.vars[0], -50, 50);
+  expect_domain(m.vars[1], -50, 50);
+  expect_minus_pi_pi(m.vars[2]);
+  for (int j = 3; j < 6; ++j) expect_domain(m.vars[j], 10, 32);
+  EXPECT_EQ(m.equation_text.size(), 3u);
+}
+
+TEST_F(ParserTest, ThreeRrrStar) {
+  Model m = load_model(robots("3rrr_star.robot"));
+  EXPECT_EQ(m.name, "3-RRR*");
+  EXPECT_EQ(m.n(), 3);
+  expect_vars(m, {{"x1", P, false}, {"x2", P, false}, {"x3", P, false},
+                  {"q1", C, true}, {"q2", C, true}, {"q3", C, true}});
+  expect_domain(m.vars[0], -50, 50);
+  expect_domain(m.vars[1], -50, 50);
+  expect_domain(m.vars[2], 0, 0);  // fixed orientation
+  for (int j = 3; j < 6; ++j) expect_minus_pi_pi(m.vars[j]);
+  Box b = m.initial_box();
+  ASSERT_EQ(b.size(), 6u);
+  EXPECT_EQ(b[2].width_up(), 0.0);
+}
+
+TEST_F(ParserTest, EmbeddedDefaultIsTheRrrrrFile) {
+  Model d = parse_model(kDefaultModelText, "<default>");
+  Model f = load_model(robots("rrrrr.robot"));
+  EXPECT_EQ(d.name, f.name);
+  EXPECT_EQ(d.var_names(), f.var_names());
+  EXPECT_EQ(d.equation_text, f.equation_text);
+  for (size_t j = 0; j < d.vars.size(); ++j) {
+    EXPECT_TRUE(mpfr_equal_p(&d.vars[j].domain.get()->left, &f.vars[j].domain.get()->left));
+    EXPECT_TRUE(mpfr_equal_p(&d.vars[j].domain.get()->right, &f.vars[j].domain.get()->right));
+    EXPECT_EQ(d.vars[j].periodic, f.vars[j].periodic);
+  }
+}
+
+TEST_F(ParserTest, MissingFileIsAModelErrorAtZeroZero) {
+  try {
+    load_model("/nonexistent/dir/none.robot");
+    FAIL() << "no error for a missing file";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.line(), 0);
+    EXPECT_EQ(e.col(), 0);
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/none.robot:0:0: error: " + e.message());
+    EXPECT_NE(e.message().find("cannot open"), std::string::npos) << e.message();
+  }
+}
+
+TEST_F(ParserTest, AcceptedSyntax) {
+  // Comments, continuation inside parentheses, let/constant, factor, min/max, unary
+  // signs, negative exponents, a periodic variable inside sin/cos of a sum, and
+  // a [0, 2*pi] periodic domain.
+  Model m = parse_model(
+      "# header comment\n"
+      "robot My Robot 2  # trailing comment\n"
+      "constant L = 2.5e0\n"
+      "pose x in [-L, +L]\n"
+      "pose t in [0, 2*pi] periodic\n"
+      "command q in [1e-3, 10]\n"
+      "command r in [-(1), 1]\n"
+      "let s = sin(t + 0.5)\n"
+      "equation ((x - L*cos(t))^2 +\n"
+      "          (q - s)^-2) = 1\n"
+      "equation min(x, q) + max(r, -x) = abs(r)^3\n"
+      "factor x*q\n",
+      "ok.robot");
+  EXPECT_EQ(m.name, "MyRobot2");
+  EXPECT_EQ(m.n(), 2);
+  expect_vars(m, {{"x", P, false}, {"t", P, true}, {"q", C, false}, {"r", C, false}});
+  expect_domain(m.vars[0], -2.5, 2.5);
+  expect_domain(m.vars[3], -1, 1);
+  EXPECT_EQ(m.vars[1].line, 5);
+  ASSERT_EQ(m.user_factors.size(), 1u);
+  EXPECT_EQ(m.user_factor_lines[0], 12);
+  EXPECT_EQ(m.user_factor_text[0], "x * q");
+  // q's lower bound is the enclosure of 1/1000, rounded down.
+  EXPECT_LT(mpfr_cmp_d(&m.vars[2].domain.get()->left, 1e-3), 0);
+}
+
+// A fixed variable at an inexact decimal or at pi/4 is a legitimate domain.
+TEST_F(ParserTest, DegenerateInexactDomainIsAccepted) {
+  for (const char* bound : {"0.1", "pi/4"}) {
+    SCOPED_TRACE(bound);
+    std::string text = std::string("robot T\npose x in [0, 1]\npose y in [") + bound + ", " +
+                       bound + "]\ncommand q in [0, 1]\ncommand r in [0, 1]\n"
+                       "equation x + y = q\nequation x - y = r\n";
+    try {
+      Model m = parse_model(text, "fixed.robot");
+      EXPECT_LT(mpfr_cmp(&m.vars[1].domain.get()->left, &m.vars[1].domain.get()->right), 0);
+    } catch (const ModelError& e) {
+      ADD_FAILURE() << "rejected: " << e.what();
+    }
+  }
+}
+
+// ----------------------------------------------------------------- errors
+
+struct ErrorCase {
+  const char* name;
+  std::string text;
+  int line, col;
+  std::vector<std::string> words;  // each must occur in the message
+};
+
+const std::string H = "robot T\npose x in [0, 1]\ncommand q in [0, 1]\n";  // lines 1-3
+
+std::vector<ErrorCase> error_cases() {
+  return {
+      {"UnexpectedToken", H + "equation x + * q = 1\n", 4, 14, {"expected an expression", "'*'"}},
+      {"MissingEquals", H + "equation x + q 1\n", 4, 16, {"expected '='", "'1'"}},
+      {"UnclosedParen", H + "equation (x + q = 1\n", 4, 17, {"expected ')'", "'='"}},
+      {"TrailingToken", H + "equation x + q = 1 1\n", 4, 20, {"expected end of line", "'1'"}},
+      {"UnknownName", H + "equation x + r = 1\n", 4, 14, {"unknown name", "'r'"}},
+      {"UnknownFunction", H + "equation foo(x) + q = 1\n", 4, 10, {"unknown function", "'foo'"}},
+      {"DuplicateVariable", "robot T\npose x in [0, 1]\npose x in [0, 2]\n", 3, 6,
+       {"duplicate name", "'x'", "line 2"}},
+      {"DuplicateConstantAndVariable", "robot T\nconstant a = 1\ncommand a in [0, 1]\n", 3, 9,
+       {"duplicate name", "'a'", "line 2"}},
+      {"NonSquareMoreEquations", H + "equation x + q = 1\nequation x - q = 0\n", 6, 1,
+       {"not square", "1 pose", "1 command", "2 equation"}},
+      {"NonSquareNoTrailingNewline", H + "equation x + q = 1\nequation x - q = 0", 5, 19,
+       {"not square", "2 equation"}},
+      {"NonSquareMorePoses",
+       "robot T\npose x in [0, 1]\npose y in [0, 1]\ncommand q in [0, 1]\nequation x + y + q = 0\n",
+       6, 1, {"not square", "2 pose", "1 command", "1 equation"}},
+      {"NoPoseVariable", "robot T\n", 2, 1, {"no pose variable"}},
+      {"EmptyDomain", "robot T\npose x in [3, 1]\n", 2, 11, {"domain", "'x'", "exceeds"}},
+      {"PeriodicNotOnePeriod",
+       H + "command r in [0, pi] periodic\nequation cos(r) = 0\n", 4, 22,
+       {"periodic", "'r'", "one period"}},
+      {"PeriodicTooWide", H + "command r in [-pi, 2*pi] periodic\n", 4, 26, {"one period"}},
+      {"NonFiniteNumber",
+       "robot T\npose x in [0, 1e999999]\ncommand q in [0, 1]\nequation x + q = 1\n", 2, 15,
+       {"not finite"}},
+      {"NonFiniteNumberHuge",
+       "robot T\npose x in [0, 1e99999999999]\ncommand q in [0, 1]\nequation x + q = 1\n", 2,
+       15, {"not finite"}},
+      {"NonFiniteInEquation", H + "equation x * 1e99999999999 = q\n", 4, 14, {"not finite"}},
+      {"ConstraintNotSupported", H + "constraint x <= q\n", 4, 1, {"constraint", "not supported yet"}},
+      {"NonIntegerExponent", H + "equation x^1.5 + q = 1\n", 4, 12,
+       {"exponent", "integer", "'1.5'"}},
+      {"VariableExponent", H + "equation x^q = 1\n", 4, 12, {"exponent", "integer", "'q'"}},
+      {"ExponentTooLarge", H + "equation x^12345 + q = 1\n", 4, 12, {"too large"}},
+      {"MissingRobot", "pose x in [0, 1]\ncommand q in [0, 1]\nequation x + q = 1\n", 1, 1,
+       {"missing", "robot"}},
+      {"PeriodicOutsideSinCos",
+       "robot T\npose x in [-2, 2]\ncommand q in [-pi, pi] periodic\nequation q + x = 0\n", 3, 9,
+       {"periodic variable 'q'", "sin() or cos()"}},
+      {"PeriodicUnderProduct",
+       "robot T\npose x in [-2, 2]\ncommand q in [-pi, pi] periodic\nequation x*q = 1\n", 3, 9,
+       {"periodic variable 'q'", "sin() or cos()", "'*'"}},
+      {"PeriodicUnderSqr",
+       "robot T\npose x in [-2, 2]\ncommand q in [-pi, pi] periodic\nequation x + q^2 = 1\n", 3, 9,
+       {"periodic variable 'q'", "sin() or cos()"}},
+      {"UnexpectedCharacter", H + "equation x $ q = 1\n", 4, 12, {"unexpected character", "'$'"}},
+      {"UnexpectedCharacterInName", "robot T\npose x\xc3\xa9 in [0, 1]\n", 2, 7,
+       {"unexpected character"}},
+      {"MalformedNumber", H + "equation x + 1.2.3 = q\n", 4, 14, {"malformed number", "1.2.3"}},
+      {"ReservedWord", "robot T\npose sin in [0, 1]\n", 2, 6, {"reserved word", "'sin'"}},
+      {"UnknownStatement", "robot T\nfoo x\n", 2, 1, {"unknown statement", "'foo'"}},
+      {"DuplicateRobot", "robot T\nrobot U\n", 2, 1, {"duplicate 'robot'"}},
+      {"ConstantDependsOnVariable", H + "constant c = x\n", 4, 14, {"depends on a variable"}},
+      {"EquationWithoutVariable", H + "equation 1 = 1\n", 4, 10, {"does not depend"}},
+      {"DomainBoundNotConstant", "robot T\npose x in [0, 1]\npose y in [0, x]\n", 3, 15,
+       {"constant expression"}},
+      {"MissingIn", "robot T\npose x [0, 1]\n", 2, 8, {"expected 'in'", "'['"}},
+      {"ErrorAfterContinuationLine",
+       H + "equation (x +\n   q) = 1\nequation x + r = 0\n", 6, 14, {"unknown name", "'r'"}},
+      {"ErrorAfterComment", H + "# a comment line with $ and (\nequation x + r = 0\n", 5, 14,
+       {"unknown name", "'r'"}},
+  };
+}
+
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+
+class ParserError : public ::testing::TestWithParam<ErrorCase> {
+ protected:
+  void SetUp() override { set_working_precision(53); }
+};
+
+TEST_P(ParserError, ReportsFileLineColumnAndMessage) {
+  const ErrorCase& c = GetParam();
+  try {
+    Model m = parse_model(c.text, "bad.robot");
+    FAIL() << "no error for:\n" << c.text << "parsed robot '" << m.name << "', n = " << m.n()
+           << ", domain of " << m.vars[0].name << " " << interval_str(m.vars[0].domain);
+  } catch (const ModelError& e) {
+    std::string what = e.what();
+    EXPECT_EQ(e.line(), c.line) << what;
+    EXPECT_EQ(e.col(), c.col) << what;
+    std::string prefix =
+        "bad.robot:" + std::to_string(c.line) + ":" + std::to_string(c.col) + ": error: ";
+    EXPECT_EQ(what.substr(0, prefix.size()), prefix) << what;
+    EXPECT_EQ(what, "bad.robot:" + std::to_string(e.line()) + ":" + std::to_string(e.col()) +
+                        ": error: " + e.message());
+    for (const std::string& w : c.words)
+      EXPECT_NE(e.message().find(w), std::string::npos) << "'" << w << "' not in: " << what;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, ParserError, ::testing::ValuesIn(error_cases()),
+                         [](const ::testing::TestParamInfo<ErrorCase>& info) {
+                           return std::string(info.param.name);
+                         });
+
+}  // namespace
