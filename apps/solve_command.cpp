@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <sstream>
 
 #include "atomic_file.h"
+#include "certificate_writer.h"
 #include "generalized_aspects.h"
 #include "model.h"
 
@@ -103,7 +105,7 @@ int run_solve(const SolveOptions& o) {
   AspectsConfig cfg;
   cfg.eps = o.eps;
   cfg.tau = o.tau;
-  cfg.keep_proofs = !o.no_cert;
+  cfg.keep_link_proofs = !o.no_cert;
   bool show = o.progress || isatty(STDERR_FILENO);
   auto start = std::chrono::steady_clock::now();
   auto last = start;
@@ -118,11 +120,20 @@ int run_solve(const SolveOptions& o) {
                    double(s.processed) / std::max(t, 1e-9), resident_mib());
     };
 
+  std::unique_ptr<CertificateWriter> cert;
+  if (!o.out_dir.empty()) {
+    std::filesystem::create_directories(o.out_dir);
+    if (!o.no_cert) {
+      cert = std::make_unique<CertificateWriter>(o.out_dir + "/aspects.cert", model, o.prec,
+                                                 o.tau, o.eps);
+      cfg.certificate = cert.get();
+    }
+  }
   AspectsResult r = compute_aspects(model, cfg);
   if (show) std::fprintf(stderr, "\n");
 
   if (!o.out_dir.empty()) {
-    std::filesystem::create_directories(o.out_dir);
+    if (cert) cert->finish(model, r);
     write_boxes_csv(model, r, o.out_dir + "/boxes.csv");
     write_file_atomically(o.out_dir + "/summary.json", summary_json(model, o, r).dump(2) + "\n");
   }

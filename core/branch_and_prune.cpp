@@ -45,6 +45,7 @@ void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
       continue;
     }
     double p = split_point(it.box[var]);
+    steps.branched(var, p);
     int32_t left = int32_t(tree.size()), right = left + 1;
     node.split_var = var;
     node.split = p;

@@ -38,6 +38,8 @@ class BranchAndPruneSteps {
   virtual int32_t keep_undecided(const Box& box) = 0;
   // Branch: the variable to bisect, or -1 when every variable is narrower than eps.
   virtual int choose_split(const Box& box, int parent_split) = 0;
+  // Told where a box was bisected (for the certificate).
+  virtual void branched(int /*var*/, double /*at*/) {}
 };
 
 struct SearchStats {

@@ -33,12 +33,14 @@ void add_matrix_factors(Model& model, const std::vector<int>& mat, const char* n
       if (model.dag.is_constant(d)) continue;  // a nonzero constant carries no sign change
       out.push_back({d, model.dag.to_string(d, names),
                      std::string(shape_name(shape)) + " " + name + ", entry (" +
-                         std::to_string(i + 1) + "," + std::to_string(i + 1) + ")"});
+                         std::to_string(i + 1) + "," + std::to_string(i + 1) + ")",
+                     std::string("diag") + name + " " + std::to_string(i + 1)});
     }
     return;
   }
   int det = symbolic_determinant(model.dag, mat, n);
-  out.push_back({det, model.dag.to_string(det, names), std::string("det ") + name});
+  out.push_back({det, model.dag.to_string(det, names), std::string("det ") + name,
+                 std::string("det") + name});
 }
 }  // namespace
 
@@ -49,7 +51,8 @@ std::vector<Factor> determinant_factors(Model& model) {
   auto names = model.var_names();
   for (size_t i = 0; i < model.user_factors.size(); ++i)
     out.push_back({model.user_factors[i], model.user_factor_text[i],
-                   "user-supplied (line " + std::to_string(model.user_factor_lines[i]) + ")"});
+                   "user-supplied (line " + std::to_string(model.user_factor_lines[i]) + ")",
+                   "user " + std::to_string(i + 1)});
   return out;
 }
 

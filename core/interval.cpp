@@ -21,7 +21,7 @@ double Interval::lo_down() const {
   mpfi_get_left(t, v_);
   double d = mpfr_get_d(t, MPFR_RNDD);
   mpfr_clear(t);
-  return d;
+  return d + 0.0;  // MPFI keeps signed zeros; report +0
 }
 
 double Interval::hi_up() const {
@@ -30,7 +30,7 @@ double Interval::hi_up() const {
   mpfi_get_right(t, v_);
   double d = mpfr_get_d(t, MPFR_RNDU);
   mpfr_clear(t);
-  return d;
+  return d + 0.0;  // MPFI stores a zero right end as -0; report +0
 }
 
 double Interval::mid() const {

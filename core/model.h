@@ -43,6 +43,7 @@ struct Factor {
   int node;             // DAG node
   std::string text;     // printable expression
   std::string origin;   // "det Fx", "det Fq", "diagonal of Fq", "user (line N)"
+  std::string kind;     // certificate form: "detFx", "diagFq 2", "user 1"
 };
 
 struct Model {

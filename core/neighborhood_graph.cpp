@@ -118,10 +118,11 @@ std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, co
         // Query box a + 2πk meets b  ⇔  b − 2πk meets a: record −k for b.
         mpfi_mul_si(t.get(), two_pi.get(), k[v]);
         mpfi_add_d(t.get(), t.get(), R.lo(id, v));
-        q.lo[v] = t.lo_down();
+        // One ulp wider than the certificate's definition of M: M may only gain pairs.
+        q.lo[v] = std::nextafter(t.lo_down(), -INFINITY);
         mpfi_mul_si(t.get(), two_pi.get(), k[v]);
         mpfi_add_d(t.get(), t.get(), R.hi(id, v));
-        q.hi[v] = t.hi_up();
+        q.hi[v] = std::nextafter(t.hi_up(), INFINITY);
         if (q.hi[v] < domain[v].lo_down() || q.lo[v] > domain[v].hi_up()) useful = false;
       }
       if (!useful) continue;

@@ -1,6 +1,8 @@
 #include "generalized_aspects.h"
 
 #include <chrono>
+#include <cmath>
+#include <string>
 
 #include "determinant_factors.h"
 #include "model_eval.h"
@@ -17,12 +19,35 @@ class AspectsSearch : public BranchAndPruneSteps {
       : m_(m), cfg_(cfg), out_(out), ev_(m), n_(m.n()), nv_(int(m.vars.size())) {
     for (const auto& f : out_.factors) factor_nodes_.push_back(f.node);
     factor_prog_ = m.dag.closure(factor_nodes_);
+    for (int i = 0; i < n_; ++i) hints_.push_back("eq" + std::to_string(i));
     domain_ = m.initial_box();
   }
 
-  // Prune: AC3-like fixpoint of HC4-Revise over the equations, then one
-  // Hansen–Sengupta contraction of the commands.
+  // Prune: contraction (below), recorded for the certificate.
   bool prune(Box& box, int32_t& reason) override {
+    cell_ = box;
+    if (!contract(box, reason)) {
+      if (cfg_.certificate)
+        cfg_.certificate->discard(reason < n_ ? hints_[reason].c_str() : "hs");
+      return false;
+    }
+    // Leave a gap between the contraction and the recorded box, so that the closed
+    // slabs a checker refutes (certificates/FORMAT.md) really hold no solution.
+    for (int v = 0; v < nv_; ++v) {
+      double clo = cell_[v].lo_down(), chi = cell_[v].hi_up();
+      double lo = box[v].lo_down(), hi = box[v].hi_up();
+      double gap = 1e-9 * (chi - clo);
+      lo = lo - gap <= clo ? clo : std::nextafter(lo - gap, -INFINITY);
+      hi = hi + gap >= chi ? chi : std::nextafter(hi + gap, INFINITY);
+      box[v].set_hull(lo, hi);
+      if ((lo > clo || hi < chi) && cfg_.certificate) cfg_.certificate->contraction(v, lo, hi);
+    }
+    return true;
+  }
+
+  // AC3-like fixpoint of HC4-Revise over the equations, then one Hansen–Sengupta
+  // contraction of the commands; the result is rounded outward to doubles.
+  bool contract(Box& box, int32_t& reason) {
     for (int round = 0; round < 20; ++round) {
       double before = total_width(box);
       for (int i = 0; i < n_; ++i)
@@ -41,6 +66,10 @@ class AspectsSearch : public BranchAndPruneSteps {
       for (int j = 0; j < n_; ++j) box[m_.command[j]] = image_[j];
     for (auto& x : box) round_out_to_doubles(x);
     return true;
+  }
+
+  void branched(int var, double at) override {
+    if (cfg_.certificate) cfg_.certificate->split(var, at);
   }
 
   // Prove: P1 by iteration (9), the coverage and domain rules, then P2 on the
@@ -79,16 +108,14 @@ class AspectsSearch : public BranchAndPruneSteps {
         !strongly_regular(J_, &proof_.cq))
       return false;
     index = store(reported_, true);
-    if (cfg_.keep_proofs) {
-      out_.proof_of[index] = int32_t(out_.proofs.size());
-      out_.proofs.push_back(proof_);
-    }
+    if (cfg_.certificate) cfg_.certificate->solution(index, last_signs(), proof_);
     return true;
   }
 
   int32_t keep_undecided(const Box& box) override {
     int32_t index = store(box, false);
     out_.undecided_kind[index] = last_kind_;
+    if (cfg_.certificate) cfg_.certificate->undecided(index, last_signs());
     return index;
   }
 
@@ -109,6 +136,10 @@ class AspectsSearch : public BranchAndPruneSteps {
     return true;
   }
 
+  const int8_t* last_signs() const {
+    return out_.signs.data() + out_.signs.size() - out_.factors.size();
+  }
+
   static double total_width(const Box& b) {
     double w = 0;
     for (const auto& x : b) w += x.width_up();
@@ -119,7 +150,6 @@ class AspectsSearch : public BranchAndPruneSteps {
     int32_t index = out_.boxes.push(box);
     out_.certified.push_back(certified);
     out_.undecided_kind.push_back(UndecidedKind::NoExistence);
-    out_.proof_of.push_back(-1);
     // Sign of each factor on the stored box; 0 when its enclosure may vanish.
     Box exact;
     out_.boxes.get(index, exact);
@@ -135,7 +165,8 @@ class AspectsSearch : public BranchAndPruneSteps {
   ModelEvaluator ev_;
   int n_, nv_;
   std::vector<int> factor_nodes_, factor_prog_;
-  Box domain_, reported_, retry_;
+  Box domain_, reported_, retry_, cell_;
+  std::vector<std::string> hints_;
   HsWorkspace ws_;
   std::vector<Interval> image_;
   IMatrix J_;
@@ -156,7 +187,10 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     AspectsSearch search(model, config, out);
     std::function<void()> tick;
     if (config.progress) tick = [&]() { config.progress(stats); };
-    branch_and_prune(model.initial_box(), search, out.tree, stats, tick);
+    Box root = model.initial_box();
+    for (auto& x : root) round_out_to_doubles(x);
+    if (config.certificate) config.certificate->begin(root, out.factors);
+    branch_and_prune(root, search, out.tree, stats, tick);
   }
   out.processed = stats.processed;
   out.solutions = stats.solutions;
@@ -177,7 +211,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
     if (!certify_link(ev, out.boxes, pr, config.tau, lp, ws)) continue;
     out.certified_links.push_back(int32_t(e));
-    if (config.keep_proofs) out.link_proofs.push_back(lp);
+    if (config.keep_link_proofs) out.link_proofs.push_back(lp);
   }
 
   // 4.4.1: CSNCs = components of (S, N), largest first; then filtering.

@@ -15,6 +15,7 @@
 
 #include "box_store.h"
 #include "branch_and_prune.h"
+#include "certificate_sink.h"
 #include "components.h"
 #include "hansen_sengupta.h"
 #include "link.h"
@@ -28,7 +29,8 @@ struct AspectsConfig {
   double eps = 0.1;
   double tau = 1.01;
   int max_newton_iterations = 8;
-  bool keep_proofs = true;  // keep P1/P2/P3 data for the certificate
+  bool keep_link_proofs = true;       // P3 data, for the certificate
+  CertificateSink* certificate = nullptr;  // receives the tree records while solving
   std::function<void(const SearchStats&)> progress;
 };
 
@@ -49,8 +51,6 @@ struct AspectsResult {
   std::vector<uint8_t> certified;       // 1: solution box
   std::vector<UndecidedKind> undecided_kind;
   std::vector<int8_t> signs;            // factors.size() per box
-  std::vector<int32_t> proof_of;        // box -> index in proofs, or -1
-  std::vector<SolutionProof> proofs;
   std::vector<SearchNode> tree;
   std::vector<NeighborPair> neighbors;  // M
   std::vector<int32_t> certified_links; // indices into neighbors: N

@@ -1,0 +1,168 @@
+#include "certificate_writer.h"
+
+#include <openssl/sha.h>
+#include <unistd.h>
+
+#include <cstdarg>
+#include <stdexcept>
+
+namespace aspects {
+
+const char* const kToolVersion = "0.1.0";
+
+namespace {
+std::string sha256_hex(const std::string& data) {
+  unsigned char d[SHA256_DIGEST_LENGTH];
+  SHA256(reinterpret_cast<const unsigned char*>(data.data()), data.size(), d);
+  static const char* hex = "0123456789abcdef";
+  std::string s;
+  for (unsigned char c : d) {
+    s += hex[c >> 4];
+    s += hex[c & 15];
+  }
+  return s;
+}
+}  // namespace
+
+CertificateWriter::CertificateWriter(const std::string& path, const Model& model,
+                                     long precision, double tau, double eps)
+    : path_(path), tmp_(path + ".tmp." + std::to_string(getpid())) {
+  f_ = std::fopen(tmp_.c_str(), "wb");
+  if (!f_) throw std::runtime_error("cannot write " + tmp_);
+  static char buffer[1 << 20];
+  std::setvbuf(f_, buffer, _IOFBF, sizeof buffer);
+  n_ = model.n();
+  line("aspects-certificate 1");
+  line(std::string("tool aspects ") + kToolVersion);
+  line("model " + std::to_string(model.source.size()) + " " + sha256_hex(model.source));
+  std::fwrite(model.source.data(), 1, model.source.size(), f_);
+  for (char c : model.source) lines_ += (c == '\n');
+  bytes_ += long(model.source.size());
+  line("");  // the newline that ends the model text
+  line("end-model");
+  line("precision " + std::to_string(precision));
+  put("tau %a", tau);
+  end_line();
+  put("eps %a", eps);
+  end_line();
+}
+
+CertificateWriter::~CertificateWriter() {
+  if (f_) std::fclose(f_);
+  if (!finished_) std::remove(tmp_.c_str());
+}
+
+void CertificateWriter::line(const std::string& s) {
+  std::fputs(s.c_str(), f_);
+  bytes_ += long(s.size());
+  end_line();
+}
+
+void CertificateWriter::put(const char* fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  int k = std::vfprintf(f_, fmt, ap);
+  va_end(ap);
+  if (k > 0) bytes_ += k;
+}
+
+void CertificateWriter::end_line() {
+  std::fputc('\n', f_);
+  ++bytes_;
+  ++lines_;
+}
+
+void CertificateWriter::real(double x) { put(" %a", x); }
+
+void CertificateWriter::interval(const Interval& x) {
+  real(x.lo_down());
+  real(x.hi_up());
+}
+
+void CertificateWriter::signs(const int8_t* s) {
+  std::string t;
+  for (int i = 0; i < p_; ++i) t += s[i] > 0 ? '+' : s[i] < 0 ? '-' : '0';
+  if (p_ == 0) t = ".";
+  put(" %s", t.c_str());
+}
+
+void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& factors) {
+  p_ = int(factors.size());
+  put("domain");
+  for (const auto& x : domain) interval(x);
+  end_line();
+  line("factors " + std::to_string(p_));
+  for (const auto& f : factors) line("factor " + f.kind);
+  line("tree");
+}
+
+void CertificateWriter::contraction(int var, double lo, double hi) {
+  put("P %d %a %a", var, lo, hi);
+  end_line();
+}
+
+void CertificateWriter::split(int var, double at) {
+  put("B %d %a", var, at);
+  end_line();
+}
+
+void CertificateWriter::discard(const char* hint) {
+  put("X %s", hint);
+  end_line();
+}
+
+void CertificateWriter::undecided(int32_t id, const int8_t* s) {
+  put("U %d", id);
+  signs(s);
+  end_line();
+  ++leaves_;
+}
+
+void CertificateWriter::solution(int32_t id, const int8_t* s, const SolutionProof& proof) {
+  put("S %d", id);
+  signs(s);
+  for (const auto& q : proof.existence.inflated) interval(q);
+  for (const auto& q : proof.existence.image) interval(q);
+  for (double c : proof.existence.C) real(c);
+  for (double c : proof.cx) real(c);
+  for (double c : proof.cq) real(c);
+  end_line();
+  ++leaves_;
+}
+
+void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
+  line("end-tree " + std::to_string(leaves_));
+  const int nv = int(model.vars.size());
+  line("links " + std::to_string(r.certified_links.size()));
+  for (size_t i = 0; i < r.certified_links.size(); ++i) {
+    const NeighborPair& e = r.neighbors[r.certified_links[i]];
+    const LinkProof& lp = r.link_proofs.at(i);
+    std::string shift;
+    for (int v = 0; v < nv; ++v) shift += "-0+"[e.shift(v) + 1];
+    put("K %d %d %s", e.a, e.b, shift.c_str());
+    for (double x : lp.witness) real(x);
+    for (const auto& q : lp.existence.inflated) interval(q);
+    for (double c : lp.existence.C) real(c);
+    end_line();
+  }
+  line("csncs " + std::to_string(r.csnc_sizes.size()));
+  std::vector<std::vector<int32_t>> members(r.csnc_sizes.size());
+  for (int b = 0; b < r.boxes.size(); ++b)
+    if (r.csnc[b] >= 0) members[r.csnc[b]].push_back(b);
+  for (size_t k = 0; k < members.size(); ++k) {
+    put("csnc %zu %zu", k, members[k].size());
+    for (int32_t b : members[k]) put(" %d", b);
+    end_line();
+  }
+  line("claim filtered " + std::to_string(r.filtered));
+  line("claim lower-bound " + std::to_string(r.separation.lower_bound));
+  line("end " + std::to_string(lines_));
+  bool ok = std::fflush(f_) == 0 && fsync(fileno(f_)) == 0;
+  ok = std::fclose(f_) == 0 && ok;
+  f_ = nullptr;
+  if (!ok || std::rename(tmp_.c_str(), path_.c_str()) != 0)
+    throw std::runtime_error("cannot write " + path_);
+  finished_ = true;
+}
+
+}  // namespace aspects
