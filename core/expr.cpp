@@ -67,11 +67,16 @@ int Dag::add_node(Node n) {
 }
 
 int Dag::constant(const Interval& v) {
-  // Identical enclosures share a node; the key is the exact endpoints in hex.
-  char lo[96], hi[96];
-  mpfr_snprintf(lo, sizeof lo, "%Ra", &v.get()->left);
-  mpfr_snprintf(hi, sizeof hi, "%Ra", &v.get()->right);
-  auto key = std::make_pair(std::string(lo), std::string(hi));
+  // Identical enclosures share a node; the key is the exact endpoints in hex, at
+  // full length (a truncated key could merge two different constants).
+  auto exact = [](mpfr_srcptr x) {
+    char* s = nullptr;
+    mpfr_asprintf(&s, "%Ra", x);
+    std::string out(s);
+    mpfr_free_str(s);
+    return out;
+  };
+  auto key = std::make_pair(exact(&v.get()->left), exact(&v.get()->right));
   auto it = const_index_.find(key);
   if (it != const_index_.end()) return it->second;
   consts_.push_back(v);

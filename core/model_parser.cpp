@@ -3,6 +3,8 @@
 // ModelError naming the file, line and column.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -262,8 +264,6 @@ class Parser {
     if (mpfr_cmp(&lo.get()->left, &hi.get()->right) > 0)
       fail(open, "empty domain for '" + name.text + "': lower bound " + lo.str() +
                      " exceeds upper bound " + hi.str());
-    if (mpfr_cmp(&lo.get()->right, &hi.get()->left) > 0)
-      fail(open, "reversed domain for '" + name.text + "': lower bound exceeds upper bound");
     (void)lo_tok;
     (void)hi_tok;
     mpfi_interv_fr(v.domain.get(), &lo.get()->left, &hi.get()->right);
@@ -353,7 +353,9 @@ class Parser {
       ++p_;
       Interval v;
       if (!Interval::from_string(v, t.text)) fail(t, "malformed number '" + t.text + "'");
-      if (!v.bounded()) fail(t, "number '" + t.text + "' is not finite");
+      // Beyond the double range counts as non-finite: boxes are stored as doubles.
+      if (!v.bounded() || std::isinf(v.lo_down()) || std::isinf(v.hi_up()))
+        fail(t, "number '" + t.text + "' is not finite");
       return m_.dag.constant(v);
     }
     if (is_punct("(")) {
@@ -429,9 +431,9 @@ class Parser {
                                       op_name(n.op) + "')");
         }
       }
-      // An equation that is itself a sum involving the bare variable is not periodic.
-      for (size_t e = 0; e < m_.equations.size(); ++e) {
-        if (bare_use(m_.equations[e], int(vi)))
+      // An equation or factor that is itself a sum with the bare variable is not periodic.
+      for (int root : roots) {
+        if (bare_use(root, int(vi)))
           fail(var_tokens_[vi], "periodic variable '" + m_.vars[vi].name +
                                     "' must appear only inside sin() or cos()");
       }
@@ -482,6 +484,9 @@ Model parse_model(const std::string& text, const std::string& file) {
 }
 
 Model load_model(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw ModelError(path, 0, 0, "cannot open model file: it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ModelError(path, 0, 0, "cannot open model file");
   std::stringstream ss;

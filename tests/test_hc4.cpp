@@ -156,9 +156,15 @@ struct OpCase {
   int arity;   // 1: op(x); 2: op(x, y); 3: sqr(x - y) (nested); 4: sqrt(x*y) + y
 };
 
-void PrintTo(const OpCase& c, std::ostream* os) { *os << c.name; }
+struct OpParam {
+  OpCase c;
+  long prec;  // working precision; 24 bits makes the double points off-grid, so that
+              // a rounding error of one ulp in a projection can exclude them
+};
 
-class Hc4Op : public ::testing::TestWithParam<OpCase> {};
+void PrintTo(const OpParam& p, std::ostream* os) { *os << p.c.name << " at " << p.prec << " bits"; }
+
+class Hc4Op : public ::testing::TestWithParam<OpParam> {};
 
 // Exact value of the case's expression at (a, b), rounded with rnd; false if undefined.
 bool case_value(const OpCase& c, mpfr_ptr out, mpfr_srcptr a, mpfr_srcptr b, mpfr_rnd_t rnd) {
@@ -186,8 +192,9 @@ bool case_value(const OpCase& c, mpfr_ptr out, mpfr_srcptr a, mpfr_srcptr b, mpf
 }
 
 TEST_P(Hc4Op, NeverRemovesAPointOfTheConstraint) {
-  const OpCase& c = GetParam();
-  set_working_precision(53);
+  const OpCase& c = GetParam().c;
+  const long prec = GetParam().prec;
+  set_working_precision(prec);
   Dag dag;
   int x = dag.var(0), y = dag.var(1);
   int node;
@@ -201,7 +208,8 @@ TEST_P(Hc4Op, NeverRemovesAPointOfTheConstraint) {
   }
   std::vector<int> prog = dag.closure({node});
   Evaluator ev(dag);
-  std::mt19937 g(555u + unsigned(c.op) * 101u + unsigned(c.k + 20) * 7u + unsigned(c.arity));
+  std::mt19937 g(555u + unsigned(c.op) * 101u + unsigned(c.k + 20) * 7u + unsigned(c.arity) +
+                 unsigned(prec));
   static const double scales[] = {1e-3, 0.5, 1, 3, 10, 1000};
   static const double radii[] = {0, 1e-15, 1e-12, 1e-6, 1e-2, 1, 100};
   std::uniform_int_distribution<int> ps(0, 5), pr(0, 6), pw(0, 3);
@@ -237,11 +245,11 @@ TEST_P(Hc4Op, NeverRemovesAPointOfTheConstraint) {
     const Box before = box;
     ++checked;
     bool ok = ev.hc4_revise(prog, node, target, box);
-    ASSERT_TRUE(ok) << c.name << ": rejected x=" << px << " y=" << py << " target "
+    ASSERT_TRUE(ok) << c.name << " at " << prec << " bits: rejected x=" << px << " y=" << py << " target "
                     << interval_str(target, 20) << " box x in " << interval_str(before[0], 20)
                     << ", y in " << interval_str(before[1], 20);
     bool in = box[0].contains(px) && box[1].contains(py);
-    ASSERT_TRUE(in) << c.name << ": removed x=" << px << " y=" << py << " target "
+    ASSERT_TRUE(in) << c.name << " at " << prec << " bits: removed x=" << px << " y=" << py << " target "
                     << interval_str(target, 20) << "\nbox before: x in "
                     << interval_str(before[0], 20) << ", y in " << interval_str(before[1], 20)
                     << "\nbox after:  x in " << interval_str(box[0], 20) << ", y in "
@@ -274,9 +282,16 @@ std::vector<OpCase> hc4_op_cases() {
   return v;
 }
 
-INSTANTIATE_TEST_SUITE_P(AllOps, Hc4Op, ::testing::ValuesIn(hc4_op_cases()),
-                         [](const ::testing::TestParamInfo<OpCase>& info) {
-                           return info.param.name;
+std::vector<OpParam> hc4_op_params() {
+  std::vector<OpParam> v;
+  for (long prec : {24L, 53L})
+    for (const OpCase& c : hc4_op_cases()) v.push_back({c, prec});
+  return v;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllOps, Hc4Op, ::testing::ValuesIn(hc4_op_params()),
+                         [](const ::testing::TestParamInfo<OpParam>& info) {
+                           return info.param.c.name + "_prec" + std::to_string(info.param.prec);
                          });
 
 // ----------------------------------------------------------------- explicit cases

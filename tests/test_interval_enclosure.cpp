@@ -259,6 +259,8 @@ TEST(Enclosure, CompositeExpressionWithSharedNodes) {
                       dag.unary(Op::Cos, xy));
   int f = dag.binary(Op::Add, dag.binary(Op::Sub, t1, t2), t3);
   ASSERT_EQ(dag.binary(Op::Mul, y, x), xy) << "x*y and y*x must be one node";
+  ASSERT_EQ(dag.binary(Op::Add, t2, t1), dag.binary(Op::Add, t1, t2)) << "a+b and b+a: one node";
+  ASSERT_NE(dag.binary(Op::Sub, t2, t1), dag.binary(Op::Sub, t1, t2));
   std::vector<int> prog = dag.closure({f});
   Evaluator ev(dag);
   Gen gen(777);
@@ -424,6 +426,89 @@ TEST(DecimalLiterals, ParserKeepsDecimalConstantsAsEnclosures) {
   mpq_clear(three_tenths);
 }
 
+// ---------------------------------------------------------------- Interval basics
+
+TEST(IntervalBasics, DirectedConversionsToDouble) {
+  for (long prec : {24L, 53L, 113L}) {
+    set_working_precision(prec);
+    SCOPED_TRACE(prec);
+    for (const char* text : {"0.1", "-0.1", "15.9", "1e-300", "123456.789e-2", "2", "-0.5"}) {
+      Interval v;
+      ASSERT_TRUE(Interval::from_string(v, text));
+      double lo = v.lo_down(), hi = v.hi_up();
+      EXPECT_GE(mpfr_cmp_d(&v.get()->left, lo), 0) << text;
+      EXPECT_LE(mpfr_cmp_d(&v.get()->right, hi), 0) << text;
+      // Tight: the next double inward is beyond the endpoint.
+      EXPECT_LT(mpfr_cmp_d(&v.get()->left, std::nextafter(lo, INFINITY)), 0) << text;
+      EXPECT_GT(mpfr_cmp_d(&v.get()->right, std::nextafter(hi, -INFINITY)), 0) << text;
+      double m = v.mid();
+      EXPECT_TRUE(lo <= m && m <= hi) << text;
+      // width_up is an upper bound of the exact width.
+      mpfr_t w;
+      mpfr_init2(w, 4 * prec);
+      mpfr_sub(w, &v.get()->right, &v.get()->left, MPFR_RNDU);
+      EXPECT_LE(mpfr_cmp_d(w, v.width_up()), 0) << text;
+      mpfr_clear(w);
+    }
+  }
+  set_working_precision(53);
+}
+
+TEST(IntervalBasics, SetOperations) {
+  set_working_precision(53);
+  Interval a(1.0, 3.0), b(2.0, 5.0), c(4.0, 6.0), p(3.0);
+  EXPECT_TRUE(a.overlaps(b));
+  EXPECT_FALSE(a.overlaps(c));
+  EXPECT_TRUE(a.overlaps(p));   // closed: touching at 3
+  EXPECT_TRUE(p.overlaps(a));
+  EXPECT_TRUE(a.contains(p));
+  EXPECT_FALSE(a.strictly_contains(p));  // 3 is an endpoint
+  EXPECT_TRUE(a.strictly_contains(Interval(1.5, 2.5)));
+  EXPECT_TRUE(a.contains(1.0));
+  EXPECT_FALSE(a.contains(3.0000000000000004));
+  Interval i = a;
+  ASSERT_TRUE(i.intersect(b));
+  EXPECT_EQ(i.lo_down(), 2.0);
+  EXPECT_EQ(i.hi_up(), 3.0);
+  Interval j = a;
+  EXPECT_FALSE(j.intersect(c));
+  EXPECT_TRUE(j.empty());
+  Interval e;
+  e.set_entire();
+  EXPECT_FALSE(e.bounded());
+  EXPECT_TRUE(e.contains(1e308));
+  EXPECT_EQ(e.mid(), 0.0);
+  Interval h;
+  h.set_hull(-2.0, 7.0);
+  EXPECT_EQ(h.lo_down(), -2.0);
+  EXPECT_EQ(h.hi_up(), 7.0);
+  EXPECT_EQ(h.width_up(), 9.0);
+  EXPECT_EQ(certain_sign(Interval(0.5, 1.0)), 1);
+  EXPECT_EQ(certain_sign(Interval(-1.0, -0.5)), -1);
+  EXPECT_EQ(certain_sign(Interval(0.0, 1.0)), 0);
+  EXPECT_EQ(Interval(1.0, 2.5).str(), "[1, 2.5]");
+  EXPECT_EQ(box_width(Box{Interval(0.0, 1.0), Interval(-4.0, 0.0), Interval(2.0)}), 4.0);
+}
+
+TEST(IntervalBasics, CopiesKeepTheirPrecision) {
+  set_working_precision(200);
+  Interval v;
+  ASSERT_TRUE(Interval::from_string(v, "0.1"));
+  set_working_precision(53);
+  Interval copy(v);
+  EXPECT_EQ(mpfi_get_prec(copy.get()), 200);
+  Interval moved(std::move(copy));
+  EXPECT_EQ(mpfi_get_prec(moved.get()), 200);
+  EXPECT_TRUE(mpfr_equal_p(&moved.get()->left, &v.get()->left));
+  EXPECT_TRUE(mpfr_equal_p(&moved.get()->right, &v.get()->right));
+  // Assigning into a 53-bit interval rounds outward: still encloses 1/10.
+  Interval low(0.0);
+  low = v;
+  EXPECT_EQ(mpfi_get_prec(low.get()), 53);
+  EXPECT_LE(mpfr_cmp(&low.get()->left, &v.get()->left), 0);
+  EXPECT_GE(mpfr_cmp(&low.get()->right, &v.get()->right), 0);
+}
+
 // Hash-consing of constants must not merge two different enclosures, at any precision.
 TEST(DagConstants, DistinctConstantsStayDistinctAtHighPrecision) {
   for (long prec : {53L, 200L, 1024L}) {
@@ -446,6 +531,18 @@ TEST(DagConstants, DistinctConstantsStayDistinctAtHighPrecision) {
     EXPECT_EQ(mpfr_cmp(&dag.constant_value(a).get()->right, &third.get()->right), 0)
         << "node " << a << " holds " << interval_str(dag.constant_value(a), 40);
     EXPECT_EQ(dag.constant(third), a) << "identical constants must share a node";
+    // The other insertion order: the node returned for 1/3 must still enclose 1/3.
+    Dag dag2;
+    dag2.constant(lo_pt);
+    int c = dag2.constant(third);
+    mpq_t q;
+    mpq_init(q);
+    mpq_set_ui(q, 1, 3);
+    EXPECT_LT(mpfr_cmp_q(&dag2.constant_value(c).get()->left, q), 0);
+    EXPECT_GT(mpfr_cmp_q(&dag2.constant_value(c).get()->right, q), 0)
+        << "unsound: the constant node for [RNDD(1/3), RNDU(1/3)] holds the point RNDD(1/3), "
+           "which excludes 1/3";
+    mpq_clear(q);
   }
   set_working_precision(53);
 }

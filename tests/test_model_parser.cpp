@@ -188,6 +188,16 @@ TEST_F(ParserTest, AcceptedSyntax) {
   EXPECT_LT(mpfr_cmp_d(&m.vars[2].domain.get()->left, 1e-3), 0);
 }
 
+TEST_F(ParserTest, CrlfLineEndingsAndTabs) {
+  Model m = parse_model(
+      "robot T\r\n\tpose x in [0, 1]\r\ncommand q in [0, 1]  \r\nequation x + q = 1\r\n",
+      "crlf.robot");
+  EXPECT_EQ(m.n(), 1);
+  EXPECT_EQ(m.vars[0].line, 2);
+  EXPECT_EQ(m.vars[1].line, 3);
+  EXPECT_EQ(m.equation_text[0], "x + q = 1");
+}
+
 // A fixed variable at an inexact decimal or at pi/4 is a legitimate domain.
 TEST_F(ParserTest, DegenerateInexactDomainIsAccepted) {
   for (const char* bound : {"0.1", "pi/4"}) {
@@ -263,6 +273,17 @@ std::vector<ErrorCase> error_cases() {
       {"PeriodicUnderSqr",
        "robot T\npose x in [-2, 2]\ncommand q in [-pi, pi] periodic\nequation x + q^2 = 1\n", 3, 9,
        {"periodic variable 'q'", "sin() or cos()"}},
+      {"PeriodicBareInFactor",
+       "robot T\npose x in [-2, 2]\ncommand q in [-pi, pi] periodic\nequation x + cos(q) = 1\n"
+       "factor q\n",
+       3, 9, {"periodic variable 'q'", "sin() or cos()"}},
+      {"PeriodicBareInFactorSum",
+       "robot T\npose x in [-2, 2]\ncommand q in [-pi, pi] periodic\nequation x + cos(q) = 1\n"
+       "factor x + q\n",
+       3, 9, {"periodic variable 'q'", "sin() or cos()"}},
+      {"EmptyText", "", 1, 1, {"missing", "robot"}},
+      {"ErrorLineWithCrlf", "robot T\r\npose x in [0, 1]\r\ncommand q in [0, 1]\r\nequation x + r = 1\r\n",
+       4, 14, {"unknown name", "'r'"}},
       {"UnexpectedCharacter", H + "equation x $ q = 1\n", 4, 12, {"unexpected character", "'$'"}},
       {"UnexpectedCharacterInName", "robot T\npose x\xc3\xa9 in [0, 1]\n", 2, 7,
        {"unexpected character"}},
