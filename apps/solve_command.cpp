@@ -48,14 +48,20 @@ void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& 
   std::ostringstream os;
   os << "id,status,csnc,kept";
   for (const auto& v : m.vars) os << ',' << v.name << "_lo," << v.name << "_hi";
-  os << '\n';
+  os << ",boundary\n";
   for (int b = 0; b < r.boxes.size(); ++b) {
     int c = r.csnc[b];
     os << b << ',' << (r.certified[b] ? "solution" : "undecided") << ',' << c << ','
        << (c >= 0 && c < r.filtered ? 1 : 0);
     for (int v = 0; v < r.boxes.nv(); ++v)
       os << ',' << fmt_double(r.boxes.lo(b, v)) << ',' << fmt_double(r.boxes.hi(b, v));
-    os << '\n';
+    // Why a box stayed undecided: `constraint` (on the boundary of an additional
+    // constraint, the paper's blue boxes) or `singular` (P1 or P2 failed, red and
+    // black); empty for solution boxes.
+    const char* why = r.certified[b] ? ""
+                      : r.undecided_kind[b] == UndecidedKind::Constraint ? "constraint"
+                                                                         : "singular";
+    os << ',' << why << '\n';
   }
   write_file_atomically(path, os.str());
 }
@@ -78,8 +84,13 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
   long singular = 0;
   for (int b = 0; b < r.boxes.size(); ++b)
     if (!r.certified[b] && r.undecided_kind[b] == UndecidedKind::Singular) ++singular;
-  j["boxes"]["undecided_not_p1"] = r.undecided - singular;
+  long boundary = 0;
+  for (int b = 0; b < r.boxes.size(); ++b)
+    if (!r.certified[b] && r.undecided_kind[b] == UndecidedKind::Constraint) ++boundary;
+  j["boxes"]["undecided_not_p1"] = r.undecided - singular - boundary;
   j["boxes"]["undecided_not_p2"] = singular;
+  j["boxes"]["undecided_constraint_boundary"] = boundary;
+  j["constraints"] = m.constraints.size();
   int64_t kept_boxes = 0;
   for (int i = 0; i < r.filtered; ++i) kept_boxes += r.csnc_sizes[i];
   j["csncs"] = {{"count", r.csnc_sizes.size()},

@@ -46,6 +46,21 @@ struct Factor {
   std::string kind;     // certificate form: "detFx", "diagFq 2", "user 1"
 };
 
+// A node of a constraint formula (paper 5.4): an atom g(x, q) >= 0 (or > 0), or the
+// conjunction / disjunction of other formula nodes.
+struct FormulaNode {
+  enum Kind { Atom, And, Or } kind = Atom;
+  int expr = -1;        // Atom: DAG node of g = lhs - rhs (oriented so that g >= 0 holds)
+  bool strict = false;  // Atom: g > 0 instead of g >= 0
+  std::vector<int> kids;  // And/Or: formula node ids
+};
+
+struct Constraint {
+  int root;             // formula node id
+  std::string text;
+  int line;
+};
+
 struct Model {
   std::string name;
   std::string file;     // path as given, for messages
@@ -59,6 +74,9 @@ struct Model {
   std::vector<int> user_factors;  // nodes, from `factor EXPR`
   std::vector<int> user_factor_lines;
   std::vector<std::string> user_factor_text;
+  std::vector<FormulaNode> formula;      // nodes of every constraint formula
+  std::vector<Constraint> constraints;   // `constraint` statements
+  std::vector<int> constraint_atoms;     // DAG nodes g of every atom
   std::vector<int> fx, fq;  // n×n row-major nodes: d eq_i / d pose_j, d eq_i / d command_j
 
   int n() const { return int(equations.size()); }

@@ -120,7 +120,7 @@ const std::map<std::string, Op>& unary_functions() {
 const std::set<std::string>& keywords() {
   static const std::set<std::string> k = {"robot", "constant", "let", "pose", "command",
                                           "equation", "constraint", "factor", "in",
-                                          "periodic", "pi", "min", "max"};
+                                          "periodic", "pi", "min", "max", "and", "or"};
   return k;
 }
 
@@ -223,7 +223,10 @@ class Parser {
       m_.user_factor_lines.push_back(at.line);
       m_.user_factor_text.push_back(source_text(start, p_));
     } else if (k == "constraint") {
-      fail(kw, "'constraint' (inequalities) is not supported yet");
+      const Token& at = peek();
+      size_t start = p_;
+      int root = formula();
+      m_.constraints.push_back({root, source_text(start, p_), at.line});
     } else {
       fail(kw, "unknown statement '" + k +
                    "' (expected robot, constant, let, pose, command, equation or factor)");
@@ -295,6 +298,71 @@ class Parser {
     Interval v = ev.value(node);
     if (v.empty() || !v.bounded()) fail(at, "domain bound is not a finite number");
     return v;
+  }
+
+  // formula := conj ('or' conj)* ; conj := fprimary ('and' fprimary)*
+  // fprimary := '(' formula ')' | expr ('>='|'<='|'>'|'<') expr
+  int formula() {
+    int a = conjunction();
+    if (!is_word("or")) return a;
+    FormulaNode n;
+    n.kind = FormulaNode::Or;
+    n.kids.push_back(a);
+    while (is_word("or")) {
+      ++p_;
+      n.kids.push_back(conjunction());
+    }
+    m_.formula.push_back(n);
+    return int(m_.formula.size()) - 1;
+  }
+  int conjunction() {
+    int a = formula_primary();
+    if (!is_word("and")) return a;
+    FormulaNode n;
+    n.kind = FormulaNode::And;
+    n.kids.push_back(a);
+    while (is_word("and")) {
+      ++p_;
+      n.kids.push_back(formula_primary());
+    }
+    m_.formula.push_back(n);
+    return int(m_.formula.size()) - 1;
+  }
+  int formula_primary() {
+    if (is_punct("(")) {
+      // Either a parenthesised formula or an expression starting with '(':
+      // try the formula first and fall back to a comparison.
+      size_t save = p_;
+      size_t formula_size = m_.formula.size(), atoms = m_.constraint_atoms.size();
+      try {
+        ++p_;
+        int f = formula();
+        expect_punct(")");
+        if (!is_relation()) return f;
+      } catch (const ModelError&) {
+      }
+      p_ = save;
+      m_.formula.resize(formula_size);
+      m_.constraint_atoms.resize(atoms);
+    }
+    const Token& at = peek();
+    int lhs = expr();
+    if (!is_relation())
+      fail(peek(), "expected a comparison ('>=', '<=', '>' or '<'), found " + describe(peek()));
+    std::string rel = next().text;
+    int rhs = expr();
+    FormulaNode n;
+    n.kind = FormulaNode::Atom;
+    n.strict = rel == ">" || rel == "<";
+    bool greater = rel[0] == '>';
+    n.expr = greater ? m_.dag.binary(Op::Sub, lhs, rhs) : m_.dag.binary(Op::Sub, rhs, lhs);
+    if (m_.dag.is_constant(n.expr)) fail(at, "comparison does not depend on any variable");
+    m_.constraint_atoms.push_back(n.expr);
+    m_.formula.push_back(n);
+    return int(m_.formula.size()) - 1;
+  }
+  bool is_relation() const {
+    return is_punct(">=") || is_punct("<=") || is_punct(">") || is_punct("<");
   }
 
   // expr := term (('+'|'-') term)*
@@ -415,6 +483,7 @@ class Parser {
     const Dag& d = m_.dag;
     std::vector<int> roots = m_.equations;
     roots.insert(roots.end(), m_.user_factors.begin(), m_.user_factors.end());
+    roots.insert(roots.end(), m_.constraint_atoms.begin(), m_.constraint_atoms.end());
     std::vector<int> live = d.closure(roots);
     for (size_t vi = 0; vi < m_.vars.size(); ++vi) {
       if (!m_.vars[vi].periodic) continue;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "constraints.h"
 #include "determinant_factors.h"
 #include "model_eval.h"
 #include "strong_regularity.h"
@@ -16,7 +17,8 @@ namespace {
 class AspectsSearch : public BranchAndPruneSteps {
  public:
   AspectsSearch(const Model& m, const AspectsConfig& cfg, AspectsResult& out)
-      : m_(m), cfg_(cfg), out_(out), ev_(m), n_(m.n()), nv_(int(m.vars.size())) {
+      : m_(m), cfg_(cfg), out_(out), ev_(m), constraints_(m, ev_), n_(m.n()),
+        nv_(int(m.vars.size())) {
     for (const auto& f : out_.factors) factor_nodes_.push_back(f.node);
     factor_prog_ = m.dag.closure(factor_nodes_);
     for (int i = 0; i < n_; ++i) hints_.push_back("eq" + std::to_string(i));
@@ -41,6 +43,14 @@ class AspectsSearch : public BranchAndPruneSteps {
       hi = hi + gap >= chi ? chi : std::nextafter(hi + gap, INFINITY);
       box[v].set_hull(lo, hi);
       if ((lo > clo || hi < chi) && cfg_.certificate) cfg_.certificate->contraction(v, lo, hi);
+    }
+    // Additional constraints (paper 5.4): a box where one certainly fails holds no
+    // feasible configuration.
+    int violated = -1;
+    if (constraints_.evaluate(box, &violated) == Truth::False) {
+      if (cfg_.certificate) cfg_.certificate->discard(("c" + std::to_string(violated)).c_str());
+      reason = n_ + 1 + violated;
+      return false;
     }
     return true;
   }
@@ -107,6 +117,11 @@ class AspectsSearch : public BranchAndPruneSteps {
     if (ev_.jacobian_q(reported_, J_) != EvalStatus::Defined ||
         !strongly_regular(J_, &proof_.cq))
       return false;
+    // Inner test: every additional constraint holds on the whole reported box.
+    if (constraints_.evaluate(reported_) != Truth::True) {
+      last_kind_ = UndecidedKind::Constraint;
+      return false;
+    }
     index = store(reported_, true);
     if (cfg_.certificate) cfg_.certificate->solution(index, last_signs(), proof_);
     return true;
@@ -114,7 +129,8 @@ class AspectsSearch : public BranchAndPruneSteps {
 
   int32_t keep_undecided(const Box& box) override {
     int32_t index = store(box, false);
-    out_.undecided_kind[index] = last_kind_;
+    bool on_constraint = !constraints_.empty() && constraints_.evaluate(box) == Truth::Unknown;
+    out_.undecided_kind[index] = on_constraint ? UndecidedKind::Constraint : last_kind_;
     if (cfg_.certificate) cfg_.certificate->undecided(index, last_signs());
     return index;
   }
@@ -163,6 +179,7 @@ class AspectsSearch : public BranchAndPruneSteps {
   const AspectsConfig& cfg_;
   AspectsResult& out_;
   ModelEvaluator ev_;
+  ConstraintChecker constraints_;
   int n_, nv_;
   std::vector<int> factor_nodes_, factor_prog_;
   Box domain_, reported_, retry_, cell_;

@@ -3,11 +3,12 @@
 // separation and the lower bound (4.4.2).
 //
 // Guarantees of the result:
-//  - every solution box S: ∀x ∈ [x] ∃! q ∈ [q] f(x,q) = 0 (P1) and Fx, Fq nonsingular
-//    on the box (P2);
+//  - every solution box S: ∀x ∈ [x] ∃! q ∈ [q] f(x,q) = 0 (P1), Fx, Fq nonsingular
+//    on the box (P2), and every additional constraint holds on the whole box;
 //  - every certified link: the two boxes share a solution (P3);
-//  - S ∪ U covers every solution of f = 0 in the initial domain (coverage), which the
-//    lower bound relies on.
+//  - S ∪ U covers every feasible solution of f = 0 in the initial domain (coverage):
+//    discarded boxes hold no point satisfying f = 0 and the constraints. The lower
+//    bound relies on it.
 #pragma once
 
 #include <functional>
@@ -37,6 +38,7 @@ struct AspectsConfig {
 enum class UndecidedKind : uint8_t {
   NoExistence = 0,  // P1 not proved (red in the paper's figures)
   Singular = 1,     // P1 proved, P2 not (black)
+  Constraint = 2,   // on the boundary of an additional constraint (blue, paper 5.4)
 };
 
 // What a solution box's proofs used (recorded in the certificate).
