@@ -117,6 +117,7 @@ int run_solve(const SolveOptions& o) {
   cfg.eps = o.eps;
   cfg.tau = o.tau;
   cfg.keep_link_proofs = !o.no_cert;
+  cfg.threads = o.threads;
   bool show = o.progress || isatty(STDERR_FILENO);
   auto start = std::chrono::steady_clock::now();
   auto last = start;

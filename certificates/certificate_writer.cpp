@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdarg>
+#include <cstring>
 #include <stdexcept>
 
 namespace aspects {
@@ -79,13 +80,6 @@ void CertificateWriter::interval(const Interval& x) {
   real(x.hi_up());
 }
 
-void CertificateWriter::signs(const int8_t* s) {
-  std::string t;
-  for (int i = 0; i < p_; ++i) t += s[i] > 0 ? '+' : s[i] < 0 ? '-' : '0';
-  if (p_ == 0) t = ".";
-  put(" %s", t.c_str());
-}
-
 void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& factors) {
   p_ = int(factors.size());
   put("domain");
@@ -94,43 +88,98 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
   line("factors " + std::to_string(p_));
   for (const auto& f : factors) line("factor " + f.kind);
   line("tree");
+  top_ = std::make_unique<TreeRecordFile>(tmp_ + ".top", p_, n_);
 }
 
-void CertificateWriter::contraction(int var, double lo, double hi) {
-  put("P %d %a %a", var, lo, hi);
-  end_line();
+TreeSink* CertificateWriter::subtree(int32_t task) {
+  if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);
+  tasks_[task] = std::make_unique<TreeRecordFile>(tmp_ + ".t" + std::to_string(task), p_, n_);
+  return tasks_[task].get();
 }
 
-void CertificateWriter::split(int var, double at) {
-  put("B %d %a", var, at);
-  end_line();
+// Copies a subtree's records, giving output boxes their global ids (depth-first order)
+// and replacing each deferred-subtree marker by that subtree's records.
+void CertificateWriter::splice(TreeRecordFile& stream) {
+  stream.close();
+  FILE* in = std::fopen(stream.path().c_str(), "rb");
+  if (!in) throw std::runtime_error("cannot read " + stream.path());
+  char* buf = nullptr;
+  size_t cap = 0;
+  ssize_t len;
+  while ((len = getline(&buf, &cap, in)) > 0) {
+    if (buf[0] == '@') {
+      splice(*tasks_.at(std::stol(buf + 1)));
+      continue;
+    }
+    if ((buf[0] == 'U' || buf[0] == 'S') && buf[1] == ' ') {
+      const char* rest = std::strchr(buf + 2, ' ');
+      put("%c %ld", buf[0], leaves_++);
+      std::fputs(rest, f_);  // keeps the newline
+      bytes_ += long(std::strlen(rest));
+      ++lines_;
+      continue;
+    }
+    std::fwrite(buf, 1, size_t(len), f_);
+    bytes_ += len;
+    ++lines_;
+  }
+  std::free(buf);
+  std::fclose(in);
 }
 
-void CertificateWriter::discard(const char* hint) {
-  put("X %s", hint);
-  end_line();
+// ---------------------------------------------------------------- TreeRecordFile
+
+TreeRecordFile::TreeRecordFile(const std::string& path, int factors, int n)
+    : path_(path), p_(factors), n_(n) {
+  f_ = std::fopen(path_.c_str(), "wb");
+  if (!f_) throw std::runtime_error("cannot write " + path_);
 }
 
-void CertificateWriter::undecided(int32_t id, const int8_t* s) {
-  put("U %d", id);
+TreeRecordFile::~TreeRecordFile() {
+  if (f_) std::fclose(f_);
+  std::remove(path_.c_str());
+}
+
+void TreeRecordFile::close() {
+  if (f_ && std::fclose(f_) != 0) throw std::runtime_error("cannot write " + path_);
+  f_ = nullptr;
+}
+
+void TreeRecordFile::signs(const int8_t* s) {
+  std::fputc(' ', f_);
+  if (p_ == 0) std::fputc('.', f_);
+  for (int i = 0; i < p_; ++i) std::fputc(s[i] > 0 ? '+' : s[i] < 0 ? '-' : '0', f_);
+}
+
+void TreeRecordFile::contraction(int var, double lo, double hi) {
+  std::fprintf(f_, "P %d %a %a\n", var, lo, hi);
+}
+
+void TreeRecordFile::split(int var, double at) { std::fprintf(f_, "B %d %a\n", var, at); }
+
+void TreeRecordFile::discard(const char* hint) { std::fprintf(f_, "X %s\n", hint); }
+
+void TreeRecordFile::deferred(int32_t task) { std::fprintf(f_, "@%d\n", task); }
+
+void TreeRecordFile::undecided(int32_t id, const int8_t* s) {
+  std::fprintf(f_, "U %d", id);
   signs(s);
-  end_line();
-  ++leaves_;
+  std::fputc('\n', f_);
 }
 
-void CertificateWriter::solution(int32_t id, const int8_t* s, const SolutionProof& proof) {
-  put("S %d", id);
+void TreeRecordFile::solution(int32_t id, const int8_t* s, const SolutionProof& proof) {
+  std::fprintf(f_, "S %d", id);
   signs(s);
+  auto interval = [&](const Interval& x) { std::fprintf(f_, " %a %a", x.lo_down(), x.hi_up()); };
   for (const auto& q : proof.existence.inflated) interval(q);
   for (const auto& q : proof.existence.image) interval(q);
-  for (double c : proof.existence.C) real(c);
-  for (double c : proof.cx) real(c);
-  for (double c : proof.cq) real(c);
-  end_line();
-  ++leaves_;
+  for (const auto* m : {&proof.existence.C, &proof.cx, &proof.cq})
+    for (double c : *m) std::fprintf(f_, " %a", c);
+  std::fputc('\n', f_);
 }
 
 void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
+  splice(*top_);
   line("end-tree " + std::to_string(leaves_));
   const int nv = int(model.vars.size());
   line("links " + std::to_string(r.certified_links.size()));

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstdio>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "certificate_sink.h"
 #include "generalized_aspects.h"
@@ -12,6 +14,33 @@
 namespace aspects {
 
 extern const char* const kToolVersion;
+
+// Tree records of one subtree, buffered in a temporary file until the writer splices
+// the subtrees in depth-first order.
+class TreeRecordFile : public TreeSink {
+ public:
+  TreeRecordFile(const std::string& path, int factors, int n);
+  ~TreeRecordFile() override;
+  TreeRecordFile(const TreeRecordFile&) = delete;
+  TreeRecordFile& operator=(const TreeRecordFile&) = delete;
+
+  void contraction(int var, double lo, double hi) override;
+  void split(int var, double at) override;
+  void discard(const char* hint) override;
+  void undecided(int32_t id, const int8_t* signs) override;
+  void solution(int32_t id, const int8_t* signs, const SolutionProof& proof) override;
+  void deferred(int32_t task) override;
+  void finished() override { close(); }
+
+  const std::string& path() const { return path_; }
+  void close();  // flushes; the file can then be read back
+
+ private:
+  void signs(const int8_t* s);
+  std::string path_;
+  FILE* f_ = nullptr;
+  int p_, n_;
+};
 
 class CertificateWriter : public CertificateSink {
  public:
@@ -22,11 +51,8 @@ class CertificateWriter : public CertificateSink {
   CertificateWriter& operator=(const CertificateWriter&) = delete;
 
   void begin(const Box& domain, const std::vector<Factor>& factors) override;
-  void contraction(int var, double lo, double hi) override;
-  void split(int var, double at) override;
-  void discard(const char* hint) override;
-  void undecided(int32_t id, const int8_t* signs) override;
-  void solution(int32_t id, const int8_t* signs, const SolutionProof& proof) override;
+  TreeSink* top() override { return top_.get(); }
+  TreeSink* subtree(int32_t task) override;
 
   // Links, CSNCs and claims; then closes and renames the file into place.
   void finish(const Model& model, const AspectsResult& result);
@@ -37,10 +63,12 @@ class CertificateWriter : public CertificateSink {
   void put(const char* fmt, ...);
   void real(double x);
   void interval(const Interval& x);
-  void signs(const int8_t* s);
   void end_line();
+  void splice(TreeRecordFile& stream);
 
   std::string path_, tmp_;
+  std::unique_ptr<TreeRecordFile> top_;
+  std::vector<std::unique_ptr<TreeRecordFile>> tasks_;
   FILE* f_ = nullptr;
   int p_ = 0, n_ = 0;
   long lines_ = 0, leaves_ = 0, bytes_ = 0;

@@ -7,20 +7,30 @@ namespace aspects {
 double split_point(const Interval& x) { return x.mid(); }
 
 void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
-                      SearchStats& stats, const std::function<void()>& on_progress) {
+                      SearchStats& stats, const std::function<void()>& on_progress,
+                      int root_parent_split, int defer_depth,
+                      std::vector<DeferredSubtree>* deferred) {
   struct Item {
     Box box;
     int32_t node;
     int parent_split;
+    int depth;
   };
   tree.clear();
   tree.emplace_back();
   std::vector<Item> stack;  // Extract: depth first
-  stack.push_back({root, 0, -1});
+  stack.push_back({root, 0, root_parent_split, 0});
   while (!stack.empty()) {
     Item it = std::move(stack.back());
     stack.pop_back();
     SearchNode& node = tree[it.node];
+    if (it.depth == defer_depth) {
+      node.fate = LeafFate::Deferred;
+      node.leaf = int32_t(deferred->size());
+      steps.deferred(node.leaf);
+      deferred->push_back({std::move(it.box), it.parent_split, it.node});
+      continue;
+    }
     ++stats.processed;
     if (on_progress && (stats.processed & 1023) == 0) on_progress();
     int32_t reason = -1;
@@ -57,8 +67,8 @@ void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     hi[var].set_hull(p, it.box[var].hi_up());
     it.box[var].set_hull(it.box[var].lo_down(), p);
     // Push right first so the left half is extracted next (depth first, left to right).
-    stack.push_back({std::move(hi), right, var});
-    stack.push_back({std::move(it.box), left, var});
+    stack.push_back({std::move(hi), right, var, it.depth + 1});
+    stack.push_back({std::move(it.box), left, var, it.depth + 1});
   }
 }
 

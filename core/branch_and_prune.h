@@ -14,13 +14,14 @@
 
 namespace aspects {
 
-enum class LeafFate : uint8_t { Solution, Undecided, Discarded };
+enum class LeafFate : uint8_t { Solution, Undecided, Discarded, Deferred };
 
 struct SearchNode {
   int32_t left = -1, right = -1;  // children (internal nodes)
   int32_t split_var = -1;         // bisected variable (internal nodes)
   double split = 0;               // exact split point: left has v <= split, right v >= split
-  int32_t leaf = -1;              // leaf: index of the output box in R, or -1 (discarded)
+  int32_t leaf = -1;              // leaf: index of the output box in R, or -1 (discarded);
+                                  // deferred node: index of its subtree task
   LeafFate fate = LeafFate::Discarded;
   int32_t reason = -1;            // discarded leaf: what refuted it (see Steps::prune)
 };
@@ -38,17 +39,32 @@ class BranchAndPruneSteps {
   virtual int32_t keep_undecided(const Box& box) = 0;
   // Branch: the variable to bisect, or -1 when every variable is narrower than eps.
   virtual int choose_split(const Box& box, int parent_split) = 0;
-  // Told where a box was bisected (for the certificate).
+  // Told where a box was bisected, and where a subtree was deferred (for the
+  // certificate).
   virtual void branched(int /*var*/, double /*at*/) {}
+  virtual void deferred(int32_t /*task*/) {}
 };
 
 struct SearchStats {
   std::atomic<long> processed{0}, solutions{0}, undecided{0}, discarded{0};
 };
 
-// Runs Algorithm 1 from `root`. The tree's node 0 is the root.
+// A subtree left for later (parallel) processing: its box, as Extract would have
+// returned it, and the split that produced it.
+struct DeferredSubtree {
+  Box box;
+  int parent_split;
+  int32_t node;  // its node in the tree that deferred it
+};
+
+// Runs Algorithm 1 from `root`. The tree's node 0 is the root. With `defer_depth` >= 0,
+// nodes at that depth are not processed but appended to *deferred (in depth-first order)
+// and marked LeafFate::Deferred; each can then be searched on its own, with the same
+// result as if the search had continued: the steps keep no state between boxes.
 void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
-                      SearchStats& stats, const std::function<void()>& on_progress = {});
+                      SearchStats& stats, const std::function<void()>& on_progress = {},
+                      int root_parent_split = -1, int defer_depth = -1,
+                      std::vector<DeferredSubtree>* deferred = nullptr);
 
 // Splits at a double inside the interval (the midpoint, rounded): both halves non-empty.
 double split_point(const Interval& x);

@@ -1,6 +1,12 @@
 #include "generalized_aspects.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 #include <chrono>
+#include <mutex>
+#include <stdexcept>
 #include <cmath>
 #include <string>
 
@@ -16,8 +22,8 @@ namespace {
 // Algorithm 1's steps for the NCSP (4): f = 0, det Fx ≠ 0, det Fq ≠ 0.
 class AspectsSearch : public BranchAndPruneSteps {
  public:
-  AspectsSearch(const Model& m, const AspectsConfig& cfg, AspectsResult& out)
-      : m_(m), cfg_(cfg), out_(out), ev_(m), constraints_(m, ev_), n_(m.n()),
+  AspectsSearch(const Model& m, const AspectsConfig& cfg, AspectsResult& out, TreeSink* sink)
+      : m_(m), cfg_(cfg), out_(out), sink_(sink), ev_(m), constraints_(m, ev_), n_(m.n()),
         nv_(int(m.vars.size())) {
     for (const auto& f : out_.factors) factor_nodes_.push_back(f.node);
     factor_prog_ = m.dag.closure(factor_nodes_);
@@ -29,8 +35,8 @@ class AspectsSearch : public BranchAndPruneSteps {
   bool prune(Box& box, int32_t& reason) override {
     cell_ = box;
     if (!contract(box, reason)) {
-      if (cfg_.certificate)
-        cfg_.certificate->discard(reason < n_ ? hints_[reason].c_str() : "hs");
+      if (sink_)
+        sink_->discard(reason < n_ ? hints_[reason].c_str() : "hs");
       return false;
     }
     // Leave a gap between the contraction and the recorded box, so that the closed
@@ -42,13 +48,13 @@ class AspectsSearch : public BranchAndPruneSteps {
       lo = lo - gap <= clo ? clo : std::nextafter(lo - gap, -INFINITY);
       hi = hi + gap >= chi ? chi : std::nextafter(hi + gap, INFINITY);
       box[v].set_hull(lo, hi);
-      if ((lo > clo || hi < chi) && cfg_.certificate) cfg_.certificate->contraction(v, lo, hi);
+      if ((lo > clo || hi < chi) && sink_) sink_->contraction(v, lo, hi);
     }
     // Additional constraints (paper 5.4): a box where one certainly fails holds no
     // feasible configuration.
     int violated = -1;
     if (constraints_.evaluate(box, &violated) == Truth::False) {
-      if (cfg_.certificate) cfg_.certificate->discard(("c" + std::to_string(violated)).c_str());
+      if (sink_) sink_->discard(("c" + std::to_string(violated)).c_str());
       reason = n_ + 1 + violated;
       return false;
     }
@@ -79,7 +85,11 @@ class AspectsSearch : public BranchAndPruneSteps {
   }
 
   void branched(int var, double at) override {
-    if (cfg_.certificate) cfg_.certificate->split(var, at);
+    if (sink_) sink_->split(var, at);
+  }
+
+  void deferred(int32_t task) override {
+    if (sink_) sink_->deferred(task);
   }
 
   // Prove: P1 by iteration (9), the coverage and domain rules, then P2 on the
@@ -123,7 +133,7 @@ class AspectsSearch : public BranchAndPruneSteps {
       return false;
     }
     index = store(reported_, true);
-    if (cfg_.certificate) cfg_.certificate->solution(index, last_signs(), proof_);
+    if (sink_) sink_->solution(index, last_signs(), proof_);
     return true;
   }
 
@@ -131,7 +141,7 @@ class AspectsSearch : public BranchAndPruneSteps {
     int32_t index = store(box, false);
     bool on_constraint = !constraints_.empty() && constraints_.evaluate(box) == Truth::Unknown;
     out_.undecided_kind[index] = on_constraint ? UndecidedKind::Constraint : last_kind_;
-    if (cfg_.certificate) cfg_.certificate->undecided(index, last_signs());
+    if (sink_) sink_->undecided(index, last_signs());
     return index;
   }
 
@@ -178,6 +188,7 @@ class AspectsSearch : public BranchAndPruneSteps {
   const Model& m_;
   const AspectsConfig& cfg_;
   AspectsResult& out_;
+  TreeSink* sink_;
   ModelEvaluator ev_;
   ConstraintChecker constraints_;
   int n_, nv_;
@@ -193,22 +204,114 @@ class AspectsSearch : public BranchAndPruneSteps {
 
 }  // namespace
 
+namespace {
+
+// Output boxes and tree of one part of the search (the top of the tree, or a subtree).
+struct SearchPart {
+  AspectsResult out;
+  std::vector<SearchNode> tree;
+  int32_t next_leaf = 0;  // merge cursor: leaves are taken in their local order
+};
+
+// Rebuilds one tree from the top part and the subtrees, in depth-first preorder, and
+// numbers the output boxes in that order (the order of the certificate's records).
+class PartMerger {
+ public:
+  PartMerger(SearchPart& top, std::vector<SearchPart>& parts, AspectsResult& out)
+      : top_(top), parts_(parts), out_(out), p_(out.factors.size()) {}
+
+  int32_t graft(SearchPart& part, int32_t i) {
+    const SearchNode src = part.tree[i];
+    if (src.fate == LeafFate::Deferred && src.split_var < 0)
+      return graft(parts_[src.leaf], 0);
+    int32_t id = int32_t(out_.tree.size());
+    out_.tree.push_back(src);
+    if (src.split_var >= 0) {
+      int32_t l = graft(part, src.left);
+      int32_t r = graft(part, src.right);
+      out_.tree[id].left = l;
+      out_.tree[id].right = r;
+    } else if (src.leaf >= 0) {
+      if (src.leaf != part.next_leaf++) throw std::logic_error("merge: leaves out of order");
+      out_.tree[id].leaf = take_box(part.out, src.leaf);
+    }
+    return id;
+  }
+
+ private:
+  int32_t take_box(const AspectsResult& from, int32_t b) {
+    Box box;
+    from.boxes.get(b, box);
+    int32_t id = out_.boxes.push(box);
+    out_.certified.push_back(from.certified[b]);
+    out_.undecided_kind.push_back(from.undecided_kind[b]);
+    for (size_t i = 0; i < p_; ++i) out_.signs.push_back(from.signs[b * p_ + i]);
+    return id;
+  }
+
+  SearchPart& top_;
+  std::vector<SearchPart>& parts_;
+  AspectsResult& out_;
+  size_t p_;
+};
+
+}  // namespace
+
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   auto t0 = std::chrono::steady_clock::now();
   AspectsResult out;
   out.factors = determinant_factors(model);  // adds nodes: before any evaluator exists
-  out.boxes = BoxStore(int(model.vars.size()));
+  const int nv = int(model.vars.size());
+  out.boxes = BoxStore(nv);
+  const long prec = working_precision();
 
   SearchStats stats;
+  std::mutex progress_lock;
+  std::function<void()> tick;
+  if (config.progress)
+    tick = [&]() {
+      if (!progress_lock.try_lock()) return;
+      config.progress(stats);
+      progress_lock.unlock();
+    };
+  Box root = model.initial_box();
+  for (auto& x : root) round_out_to_doubles(x);
+  CertificateSink* cert = config.certificate;
+  if (cert) cert->begin(root, out.factors);
+
+  // The top of the tree, then the subtrees below `defer_depth`, in parallel. The
+  // result does not depend on the number of threads: the subtrees are fixed, and are
+  // merged back in depth-first order.
+  auto new_part = [&](SearchPart& part) {
+    part.out.factors = out.factors;
+    part.out.boxes = BoxStore(nv);
+  };
+  SearchPart top;
+  new_part(top);
+  std::vector<DeferredSubtree> deferred;
   {
-    AspectsSearch search(model, config, out);
-    std::function<void()> tick;
-    if (config.progress) tick = [&]() { config.progress(stats); };
-    Box root = model.initial_box();
-    for (auto& x : root) round_out_to_doubles(x);
-    if (config.certificate) config.certificate->begin(root, out.factors);
-    branch_and_prune(root, search, out.tree, stats, tick);
+    AspectsSearch search(model, config, top.out, cert ? cert->top() : nullptr);
+    branch_and_prune(root, search, top.tree, stats, tick, -1, config.defer_depth, &deferred);
   }
+  std::vector<SearchPart> parts(deferred.size());
+  std::vector<TreeSink*> sinks(deferred.size(), nullptr);
+  for (size_t k = 0; k < deferred.size(); ++k) {
+    new_part(parts[k]);
+    if (cert) sinks[k] = cert->subtree(int32_t(k));
+  }
+  tbb::task_arena arena(std::max(1, config.threads));
+  arena.execute([&] {
+    tbb::parallel_for(size_t(0), deferred.size(), [&](size_t k) {
+      set_working_precision(prec);  // MPFR's default precision is per thread
+      AspectsSearch search(model, config, parts[k].out, sinks[k]);
+      branch_and_prune(deferred[k].box, search, parts[k].tree, stats, tick,
+                       deferred[k].parent_split);
+      if (sinks[k]) sinks[k]->finished();
+      deferred[k].box.clear();
+    }, tbb::simple_partitioner());
+  });
+  PartMerger(top, parts, out).graft(top, 0);
+  parts.clear();
   out.processed = stats.processed;
   out.solutions = stats.solutions;
   out.undecided = stats.undecided;
@@ -219,16 +322,31 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   for (const auto& v : model.vars) periodic.push_back(v.periodic);
   out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic, model.initial_box());
 
-  // 4.3.2: certified links between solution boxes (P3).
-  ModelEvaluator ev(model);
-  HsWorkspace ws;
-  LinkProof lp;
-  for (size_t e = 0; e < out.neighbors.size(); ++e) {
-    const auto& pr = out.neighbors[e];
-    if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
-    if (!certify_link(ev, out.boxes, pr, config.tau, lp, ws)) continue;
-    out.certified_links.push_back(int32_t(e));
-    if (config.keep_link_proofs) out.link_proofs.push_back(lp);
+  // 4.3.2: certified links between solution boxes (P3), in blocks processed in
+  // parallel and concatenated in order.
+  const size_t block = 4096, blocks = (out.neighbors.size() + block - 1) / block;
+  std::vector<std::vector<int32_t>> block_links(blocks);
+  std::vector<std::vector<LinkProof>> block_proofs(blocks);
+  arena.execute([&] {
+    tbb::parallel_for(size_t(0), blocks, [&](size_t k) {
+      set_working_precision(prec);
+      ModelEvaluator ev(model);
+      HsWorkspace ws;
+      LinkProof lp;
+      size_t end = std::min(out.neighbors.size(), (k + 1) * block);
+      for (size_t e = k * block; e < end; ++e) {
+        const auto& pr = out.neighbors[e];
+        if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
+        if (!certify_link(ev, out.boxes, pr, config.tau, lp, ws)) continue;
+        block_links[k].push_back(int32_t(e));
+        if (config.keep_link_proofs) block_proofs[k].push_back(lp);
+      }
+    });
+  });
+  for (size_t k = 0; k < blocks; ++k) {
+    out.certified_links.insert(out.certified_links.end(), block_links[k].begin(),
+                               block_links[k].end());
+    for (auto& lp : block_proofs[k]) out.link_proofs.push_back(std::move(lp));
   }
 
   // 4.4.1: CSNCs = components of (S, N), largest first; then filtering.

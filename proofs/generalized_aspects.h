@@ -31,6 +31,8 @@ struct AspectsConfig {
   double tau = 1.01;
   int max_newton_iterations = 8;
   bool keep_link_proofs = true;       // P3 data, for the certificate
+  int threads = 1;
+  int defer_depth = 8;  // subtrees below this depth are searched in parallel
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
   std::function<void(const SearchStats&)> progress;
 };
