@@ -89,3 +89,31 @@ TEST(GeneralizedAspects, SeamLinksAreCertifiedOnPeriodicCommands) {
     for (int v = 0; v < r.boxes.nv(); ++v) wrapped += r.neighbors[e].shift(v) != 0;
   EXPECT_GT(wrapped, 0);
 }
+
+TEST(GeneralizedAspects, ParallelSubtreesGiveTheSequentialResult) {
+  // The search deferred below depth 8 and merged back (1 or 2 threads) must equal the
+  // plain depth-first search, box for box.
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rprpr.robot");
+  AspectsConfig plain;
+  plain.defer_depth = -1;
+  AspectsResult a = compute_aspects(m, plain);
+  for (int threads : {1, 2}) {
+    Model m2 = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rprpr.robot");
+    AspectsConfig cfg;
+    cfg.threads = threads;
+    cfg.defer_depth = 4;
+    AspectsResult b = compute_aspects(m2, cfg);
+    ASSERT_EQ(a.boxes.size(), b.boxes.size());
+    for (int i = 0; i < a.boxes.size(); ++i)
+      for (int v = 0; v < a.boxes.nv(); ++v) {
+        ASSERT_EQ(a.boxes.lo(i, v), b.boxes.lo(i, v)) << "box " << i;
+        ASSERT_EQ(a.boxes.hi(i, v), b.boxes.hi(i, v)) << "box " << i;
+      }
+    EXPECT_EQ(a.certified, b.certified);
+    EXPECT_EQ(a.signs, b.signs);
+    EXPECT_EQ(a.tree.size(), b.tree.size());
+    EXPECT_EQ(a.certified_links, b.certified_links);
+    EXPECT_EQ(a.csnc_sizes, b.csnc_sizes);
+  }
+}
