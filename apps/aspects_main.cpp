@@ -25,10 +25,15 @@ int main(int argc, char** argv) {
   solve->add_option("--prec", so.prec, "MPFI precision in bits (>= 24)")->default_val(53);
   solve->add_option("--tau", so.tau, "inflation factor of the Hansen-Sengupta iteration (>= 1)")->default_val(1.01);
   solve->add_option("--out", so.out_dir, "write summary.json, boxes.csv and aspects.cert here");
-  solve->add_option("--threads", so.threads, "worker threads")->default_val(1);
+  solve->add_option("--threads", so.threads, "worker threads (0: one per core); results do not depend on it")
+      ->default_val(0);
   solve->add_flag("--progress", so.progress, "progress on stderr even when it is not a terminal");
   solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
   solve->add_flag("--quiet", so.quiet, "print no summary");
+  solve->add_option("--bisect", so.bisect,
+                    "bisection strategy: round-robin (the paper) or pose-first")
+      ->check(CLI::IsMember({"round-robin", "pose-first"}))
+      ->default_val("round-robin");
 
   try {
     app.parse(argc, argv);

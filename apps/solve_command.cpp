@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <memory>
+#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -35,7 +36,8 @@ void validate(const SolveOptions& o) {
     throw UsageError("--tau must be >= 1 (got " + std::to_string(o.tau) + ")");
   if (o.prec < 24 || o.prec > 4096)
     throw UsageError("--prec must be between 24 and 4096 bits (got " + std::to_string(o.prec) + ")");
-  if (o.threads < 1) throw UsageError("--threads must be >= 1");
+  if (o.threads < 0 || o.threads > 1024)
+    throw UsageError("--threads must be between 0 (one per core) and 1024");
 }
 
 std::string fmt_double(double x) {
@@ -74,6 +76,7 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
   j["precision_bits"] = o.prec;
   j["tau"] = o.tau;
   j["threads"] = o.threads;
+  j["bisect"] = o.bisect;
   j["time_seconds"] = r.seconds;
   j["boxes"] = {{"total", r.boxes.size()},
                 {"solution", r.solutions},
@@ -107,8 +110,10 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
 
 }  // namespace
 
-int run_solve(const SolveOptions& o) {
-  validate(o);
+int run_solve(const SolveOptions& opts) {
+  validate(opts);
+  SolveOptions o = opts;
+  if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
   set_working_precision(o.prec);
   Model model = o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
                                      : load_model(o.model_path);
@@ -118,6 +123,7 @@ int run_solve(const SolveOptions& o) {
   cfg.tau = o.tau;
   cfg.keep_link_proofs = !o.no_cert;
   cfg.threads = o.threads;
+  cfg.bisection = o.bisect == "pose-first" ? Bisection::PoseFirst : Bisection::RoundRobin;
   bool show = o.progress || isatty(STDERR_FILENO);
   auto start = std::chrono::steady_clock::now();
   auto last = start;

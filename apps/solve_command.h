@@ -12,10 +12,11 @@ struct SolveOptions {
   long prec = 53;
   double tau = 1.01;
   std::string out_dir;
-  int threads = 1;
+  int threads = 0;  // 0: one per core
   bool progress = false;
   bool no_cert = false;
   bool quiet = false;
+  std::string bisect = "round-robin";
 };
 
 // A bad option value; reported with exit code 2.

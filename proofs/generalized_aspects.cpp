@@ -147,6 +147,17 @@ class AspectsSearch : public BranchAndPruneSteps {
 
   // Branch: round robin over the variables wider than eps.
   int choose_split(const Box& box, int parent_split) override {
+    if (cfg_.bisection == Bisection::PoseFirst) {
+      // The widest pose variable wider than eps; the commands only once every pose
+      // variable is narrow (Prune's Hansen–Sengupta step usually locates q before).
+      int best = -1;
+      for (int group = 0; group < 2 && best < 0; ++group) {
+        double widest = cfg_.eps;
+        for (int v : group == 0 ? m_.pose : m_.command)
+          if (box[v].width_up() > widest) widest = box[v].width_up(), best = v;
+      }
+      return best;
+    }
     for (int s = 1; s <= nv_; ++s) {
       int v = (parent_split + s + nv_) % nv_;
       if (parent_split < 0) v = s - 1;

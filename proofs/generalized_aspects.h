@@ -26,12 +26,18 @@
 
 namespace aspects {
 
+enum class Bisection {
+  RoundRobin,  // the paper (4.2.3): variables in turn, at the midpoint
+  PoseFirst,   // the widest pose variable first, commands only when the pose is narrow
+};
+
 struct AspectsConfig {
   double eps = 0.1;
   double tau = 1.01;
   int max_newton_iterations = 8;
   bool keep_link_proofs = true;       // P3 data, for the certificate
   int threads = 1;
+  Bisection bisection = Bisection::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
   std::function<void(const SearchStats&)> progress;
