@@ -124,18 +124,20 @@ int run_solve(const SolveOptions& opts) {
   cfg.keep_link_proofs = !o.no_cert;
   cfg.threads = o.threads;
   cfg.bisection = o.bisect == "pose-first" ? Bisection::PoseFirst : Bisection::RoundRobin;
-  bool show = o.progress || isatty(STDERR_FILENO);
+  const bool tty = isatty(STDERR_FILENO);
+  const bool show = o.progress || tty;
   auto start = std::chrono::steady_clock::now();
   auto last = start;
   if (show)
     cfg.progress = [&](const SearchStats& s) {
       auto now = std::chrono::steady_clock::now();
-      if (now - last < std::chrono::milliseconds(500)) return;
+      // A terminal gets one line rewritten in place; a log gets a line every 10 s.
+      if (now - last < std::chrono::milliseconds(tty ? 500 : 10000)) return;
       last = now;
       double t = std::chrono::duration<double>(now - start).count();
-      std::fprintf(stderr, "\r[aspects] %ld boxes processed, %ld solution, %ld undecided, %.0f boxes/s, %.0f MiB   ",
-                   long(s.processed), long(s.solutions), long(s.undecided),
-                   double(s.processed) / std::max(t, 1e-9), resident_mib());
+      std::fprintf(stderr, "%s[aspects] %ld boxes processed, %ld solution, %ld undecided, %.0f boxes/s, %.0f MiB%s",
+                   tty ? "\r" : "", long(s.processed), long(s.solutions), long(s.undecided),
+                   double(s.processed) / std::max(t, 1e-9), resident_mib(), tty ? "   " : "\n");
     };
 
   std::unique_ptr<CertificateWriter> cert;
@@ -148,7 +150,10 @@ int run_solve(const SolveOptions& opts) {
     }
   }
   AspectsResult r = compute_aspects(model, cfg);
-  if (show) std::fprintf(stderr, "\n");
+  if (show)
+    std::fprintf(stderr, "%s[aspects] done: %ld boxes processed, %d output boxes, %zu certified links, %.1f s, %.0f MiB\n",
+                 tty ? "\r" : "", r.processed, r.boxes.size(), r.certified_links.size(),
+                 r.seconds, resident_mib());
 
   if (!o.out_dir.empty()) {
     if (cert) cert->finish(model, r);

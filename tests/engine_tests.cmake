@@ -15,3 +15,17 @@ aspects_engine_test(test_components core 60)
 aspects_engine_test(test_generalized_aspects acceptance 600)
 aspects_engine_test(test_independent_soundness acceptance 600)
 aspects_engine_test(test_constraints acceptance 900)
+
+if(TARGET aspects)
+  add_test(NAME cli.solve_outputs
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/solve_outputs.sh $<TARGET_FILE:aspects>
+                   ${ASPECTS_TEST_ROBOTS_DIR}/prrp.robot)
+  set_tests_properties(cli.solve_outputs PROPERTIES TIMEOUT 60 LABELS cli)
+  aspects_cli_test(solve_progress 0 "\\[aspects\\] done: [0-9]+ boxes processed" --
+                   $<TARGET_FILE:aspects> solve ${ASPECTS_TEST_ROBOTS_DIR}/rprpr.robot --progress --quiet)
+  aspects_cli_test(solve_default_robot 0 "robot RRRRR" "CSNCs: [0-9]+, filtered: [0-9]+"
+                   "lower bound on the number of aspects: [0-9]+" "time: " --
+                   $<TARGET_FILE:aspects> solve --eps 0.5 --no-cert)
+  aspects_cli_test(solve_bad_threads 2 "--threads" -- $<TARGET_FILE:aspects> solve --threads -1)
+  aspects_cli_test(solve_bad_bisect 2 "--bisect" -- $<TARGET_FILE:aspects> solve --bisect middle)
+endif()
