@@ -35,6 +35,17 @@ double Interval::hi_up() const {
 
 double Interval::mid() const {
   double lo = lo_down(), hi = hi_up();
+  if (mpfi_get_prec(v_) < 53 && std::isfinite(lo) && std::isfinite(hi)) {
+    // Below 53 bits a double midpoint may not be representable: take MPFI's midpoint
+    // at the interval's precision (exact as a double), so that points set from it
+    // (Newton centres, split points, witnesses) stay points.
+    mpfr_t m;
+    mpfr_init2(m, mpfi_get_prec(v_));
+    mpfi_mid(m, v_);
+    double d = mpfr_get_d(m, MPFR_RNDN);
+    mpfr_clear(m);
+    return std::min(std::max(d, lo), hi) + 0.0;
+  }
   if (std::isinf(lo) || std::isinf(hi)) {
     if (std::isinf(lo) && std::isinf(hi)) return 0.0;
     return std::isinf(lo) ? hi : lo;
