@@ -61,6 +61,7 @@ int Dag::add_node(Node n) {
     deps.swap(merged);
   }
   depends_.push_back(!deps.empty());
+  depth_.push_back(1 + std::max(n.a >= 0 ? depth_[n.a] : 0, n.b >= 0 ? depth_[n.b] : 0));
   var_deps_.push_back(std::move(deps));
   index_.emplace(key, id);
   return id;

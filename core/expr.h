@@ -52,6 +52,9 @@ class Dag {
   int derivative(int node, int var);
   // True when node does not depend on any variable.
   bool is_constant(int node) const { return !depends_[node]; }
+  // Length of the longest path from the node down to a leaf (recursions are bounded
+  // by it: the parser caps it).
+  int depth(int node) const { return depth_[node]; }
   // Bitmask-free dependency query: does node depend on variable v?
   bool depends_on(int node, int v) const;
   // Ids of the nodes a set of roots needs, in increasing (forward) order.
@@ -66,6 +69,7 @@ class Dag {
   std::vector<Node> nodes_;
   std::vector<Interval> consts_;
   std::vector<bool> depends_;
+  std::vector<int> depth_;
   std::map<std::tuple<int, int, int, int>, int> index_;
   std::map<std::pair<std::string, std::string>, int> const_index_;
   std::map<std::pair<int, int>, int> deriv_memo_;

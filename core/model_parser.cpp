@@ -334,6 +334,7 @@ class Parser {
       // try the formula first and fall back to a comparison.
       size_t save = p_;
       size_t formula_size = m_.formula.size(), atoms = m_.constraint_atoms.size();
+      int nesting = nesting_;
       try {
         ++p_;
         int f = formula();
@@ -342,6 +343,7 @@ class Parser {
       } catch (const ModelError&) {
       }
       p_ = save;
+      nesting_ = nesting;
       m_.formula.resize(formula_size);
       m_.constraint_atoms.resize(atoms);
     }
@@ -367,31 +369,45 @@ class Parser {
 
   // expr := term (('+'|'-') term)*
   int expr() {
+    // Recursion (here and in differentiation) is bounded by the nesting and depth of
+    // expressions: refuse absurd ones rather than overflow the stack.
+    const Token& at = peek();
+    if (++nesting_ > kMaxNesting) fail(at, "expression nested too deeply");
     int a = term();
     while (is_punct("+") || is_punct("-")) {
       Op op = next().text == "+" ? Op::Add : Op::Sub;
       a = m_.dag.binary(op, a, term());
+      if (m_.dag.depth(a) > kMaxDepth) fail(at, "expression too long (depth over 1000)");
     }
+    --nesting_;
     return a;
   }
   // term := unary (('*'|'/') unary)*
   int term() {
+    const Token& at = peek();
     int a = unary();
     while (is_punct("*") || is_punct("/")) {
       Op op = next().text == "*" ? Op::Mul : Op::Div;
       a = m_.dag.binary(op, a, unary());
+      if (m_.dag.depth(a) > kMaxDepth) fail(at, "expression too long (depth over 1000)");
     }
     return a;
   }
   // unary := '-' unary | '+' unary | power
   int unary() {
     if (is_punct("-")) {
-      ++p_;
-      return m_.dag.unary(Op::Neg, unary());
+      const Token& at = next();
+      if (++nesting_ > kMaxNesting) fail(at, "expression nested too deeply");
+      int a = m_.dag.unary(Op::Neg, unary());
+      --nesting_;
+      return a;
     }
     if (is_punct("+")) {
-      ++p_;
-      return unary();
+      const Token& at = next();
+      if (++nesting_ > kMaxNesting) fail(at, "expression nested too deeply");
+      int a = unary();
+      --nesting_;
+      return a;
     }
     return power();
   }
@@ -521,6 +537,8 @@ class Parser {
     int node;
     int line;
   };
+  static constexpr int kMaxNesting = 200, kMaxDepth = 1000;
+  int nesting_ = 0;
   std::vector<Token> toks_;
   size_t p_ = 0;
   const std::string& file_;

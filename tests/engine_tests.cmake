@@ -29,3 +29,12 @@ if(TARGET aspects)
   aspects_cli_test(solve_bad_threads 2 "--threads" -- $<TARGET_FILE:aspects> solve --threads -1)
   aspects_cli_test(solve_bad_bisect 2 "--bisect" -- $<TARGET_FILE:aspects> solve --bisect middle)
 endif()
+
+# Fuzzing (libFuzzer, clang): a bounded run of every target; skipped without clang++.
+add_test(NAME fuzz.targets_20s
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/run_fuzz.sh 20 ${CMAKE_CURRENT_BINARY_DIR}/fuzz)
+set_tests_properties(fuzz.targets_20s PROPERTIES TIMEOUT 600 LABELS fuzz)
+if(TARGET aspects)
+  aspects_cli_test(info_deep_nesting 2 "bad_deep_nesting\\.robot:4:[0-9]+: error: expression nested too deeply" --
+                   $<TARGET_FILE:aspects> info ${CMAKE_CURRENT_SOURCE_DIR}/models/bad_deep_nesting.robot)
+endif()
