@@ -40,7 +40,26 @@ void hull_into(Interval& acc, bool& acc_empty, const Interval& part) {
 
 }  // namespace
 
-Evaluator::Evaluator(const Dag& dag) : dag_(dag), v_(dag.size()) {}
+Evaluator::Evaluator(const Dag& dag)
+    : dag_(dag), v_(dag.size()), fwd_(dag.size()), cache_arg_(dag.size()), cache_val_(dag.size()),
+      cache_ok_(dag.size(), 0) {
+  mpfi_const_pi(two_pi_.get());
+  mpfi_mul_2ui(two_pi_.get(), two_pi_.get(), 1);
+}
+
+bool Evaluator::cached(int id, const Interval& arg, Interval& r) {
+  if (!cache_ok_[id]) return false;
+  const Interval& c = cache_arg_[id];
+  if (!mpfr_equal_p(L(c), L(arg)) || !mpfr_equal_p(R(c), R(arg))) return false;
+  mpfi_set(r.get(), cache_val_[id].get());
+  return true;
+}
+
+void Evaluator::remember(int id, const Interval& arg, const Interval& r) {
+  mpfi_set(cache_arg_[id].get(), arg.get());
+  mpfi_set(cache_val_[id].get(), r.get());
+  cache_ok_[id] = 1;
+}
 
 void Evaluator::eval_pow(Interval& out, const Interval& a, int k) {
   // x^|k| via the endpoints of |x| (even) or x (odd): the power is monotone there, and
@@ -140,8 +159,15 @@ EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
           mpfi_acos(r.get(), t2_.get());
         break;
       }
-      case Op::Sin: mpfi_sin(r.get(), a->get()); break;
-      case Op::Cos: mpfi_cos(r.get(), a->get()); break;
+      case Op::Sin:
+      case Op::Cos:
+        if (cached(id, *a, r)) break;
+        if (n.op == Op::Sin)
+          mpfi_sin(r.get(), a->get());
+        else
+          mpfi_cos(r.get(), a->get());
+        remember(id, *a, r);
+        break;
       case Op::Tan:
         mpfi_tan(r.get(), a->get());
         if (!r.bounded()) partial();  // a pole of tan lies in the argument
@@ -189,9 +215,7 @@ bool Evaluator::project_periodic(Op op, Interval& r, Interval& a) {
     mpfi_asin(base.get(), r.get());
   else
     mpfi_acos(base.get(), r.get());
-  Interval& two_pi = t2_;
-  mpfi_const_pi(two_pi.get());
-  mpfi_mul_2ui(two_pi.get(), two_pi.get(), 1);
+  const Interval& two_pi = two_pi_;
   double period = 6.283185307179586;
   double kmin = std::floor(a.lo_down() / period) - 1, kmax = std::ceil(a.hi_up() / period) + 1;
   if (kmax - kmin > 8) return true;  // a spans many periods: nothing to gain
@@ -221,9 +245,18 @@ bool Evaluator::project_periodic(Op op, Interval& r, Interval& a) {
 bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Interval& target,
                            Box& box) {
   if (forward(program, box) == EvalStatus::Undefined) return false;
+  for (int id : program) mpfi_set(fwd_[id].get(), v_[id].get());
   if (!v_[root].intersect(target)) return false;
-  for (auto it = program.rbegin(); it != program.rend(); ++it)
-    if (!backward(*it, box)) return false;
+  for (auto it = program.rbegin(); it != program.rend(); ++it) {
+    int id = *it;
+    // A node the backward pass did not narrow has nothing new to tell its children
+    // (skipping a projection is always sound: it only contracts less).
+    const Interval& v = v_[id];
+    if (id != root && mpfr_equal_p(L(v), L(fwd_[id])) && mpfr_equal_p(R(v), R(fwd_[id])) &&
+        dag_.node(id).op != Op::Var)
+      continue;
+    if (!backward(id, box)) return false;
+  }
   return true;
 }
 

@@ -34,10 +34,20 @@ class Evaluator {
   bool project_periodic(Op op, Interval& r, Interval& a);
   void eval_pow(Interval& out, const Interval& a, int k);
 
+  // Transcendental functions cost most of an evaluation, and the same argument comes
+  // back often (HC4 rounds, Jacobians and factors on one box): a one-entry cache per
+  // node of its last argument and value.
+  bool cached(int id, const Interval& arg, Interval& r);
+  void remember(int id, const Interval& arg, const Interval& r);
+
   const Dag& dag_;
   std::vector<Interval> v_;
+  std::vector<Interval> fwd_;  // forward values, to see which nodes backward narrowed
+  std::vector<Interval> cache_arg_, cache_val_;
+  std::vector<uint8_t> cache_ok_;
   Interval t1_, t2_, t3_;
   Interval t4_;  // its endpoints double as mpfr scratch
+  Interval two_pi_;
 };
 
 }  // namespace aspects
