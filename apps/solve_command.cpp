@@ -78,6 +78,7 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
   j["threads"] = o.threads;
   j["bisect"] = o.bisect;
   j["time_seconds"] = r.seconds;
+  for (const auto& [phase, sec] : r.phase_seconds) j["phase_seconds"][phase] = sec;
   j["boxes"] = {{"total", r.boxes.size()},
                 {"solution", r.solutions},
                 {"undecided", r.undecided},

@@ -323,6 +323,12 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   });
   PartMerger(top, parts, out).graft(top, 0);
   parts.clear();
+  auto lap = [&, last = t0](const char* phase) mutable {
+    auto now = std::chrono::steady_clock::now();
+    out.phase_seconds.emplace_back(phase, std::chrono::duration<double>(now - last).count());
+    last = now;
+  };
+  lap("search");
   out.processed = stats.processed;
   out.solutions = stats.solutions;
   out.undecided = stats.undecided;
@@ -333,6 +339,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   for (const auto& v : model.vars) periodic.push_back(v.periodic);
   out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic, model.initial_box());
 
+  lap("neighbourhood graph");
   // 4.3.2: certified links between solution boxes (P3), in blocks processed in
   // parallel and concatenated in order.
   const size_t block = 4096, blocks = (out.neighbors.size() + block - 1) / block;
@@ -360,6 +367,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     for (auto& lp : block_proofs[k]) out.link_proofs.push_back(std::move(lp));
   }
 
+  lap("certified links");
   // 4.4.1: CSNCs = components of (S, N), largest first; then filtering.
   std::vector<int32_t> vertex(out.boxes.size(), -1), box_of;
   for (int b = 0; b < out.boxes.size(); ++b)
@@ -379,6 +387,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // 4.4.2: separation by factor signs; the certified lower bound (11).
   out.separation = separate_by_signs(out.boxes.size(), int(out.factors.size()), out.signs,
                                      out.certified, out.neighbors);
+  lap("components and separation");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "box_store.h"
@@ -71,6 +73,7 @@ struct AspectsResult {
   SeparationResult separation;
   long solutions = 0, undecided = 0, discarded = 0, processed = 0;
   double seconds = 0;
+  std::vector<std::pair<std::string, double>> phase_seconds;  // wall time per phase
 };
 
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config);
