@@ -38,3 +38,14 @@ if(TARGET aspects)
   aspects_cli_test(info_deep_nesting 2 "bad_deep_nesting\\.robot:4:[0-9]+: error: expression nested too deeply" --
                    $<TARGET_FILE:aspects> info ${CMAKE_CURRENT_SOURCE_DIR}/models/bad_deep_nesting.robot)
 endif()
+
+# The solver's and the checker's evaluators compared (the test links both; check_cert
+# itself links neither core/ nor proofs/).
+add_executable(test_evaluator_differential test_evaluator_differential.cpp
+  ${PROJECT_SOURCE_DIR}/certificates/checker/model.cpp
+  ${PROJECT_SOURCE_DIR}/certificates/checker/eval.cpp)
+target_link_libraries(test_evaluator_differential PRIVATE aspects_core GTest::gtest_main)
+target_compile_definitions(test_evaluator_differential PRIVATE
+  ASPECTS_ROBOTS_DIR="${ASPECTS_TEST_ROBOTS_DIR}")
+gtest_discover_tests(test_evaluator_differential TEST_PREFIX "test_evaluator_differential."
+  DISCOVERY_MODE PRE_TEST PROPERTIES TIMEOUT 120 LABELS core)

@@ -1,0 +1,134 @@
+// cert_reader.cpp — the lexical layer of the certificate: reads the file line by line with
+// getline(3), feeds every byte to a SHA-256 context, and refuses anything that is not
+// exactly in the canonical form of FORMAT.md. Reals follow the exact grammar of glibc's %a output,
+// which rejects decimal numbers, redundant zeros, upper case, infinities and NaNs.
+#include "cert_reader.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace cc {
+
+void malformed(long record, const std::string& why) { throw CertError(true, record, why); }
+void rejected(long record, const std::string& why) { throw CertError(false, record, why); }
+
+static std::string hex_digest(EVP_MD_CTX* md) {
+  unsigned char d[EVP_MAX_MD_SIZE];
+  unsigned len = 0;
+  EVP_DigestFinal_ex(md, d, &len);
+  static const char* x = "0123456789abcdef";
+  std::string s;
+  for (unsigned i = 0; i < len; ++i) s += {x[d[i] >> 4], x[d[i] & 15]};
+  return s;
+}
+
+std::string sha256_hex(const std::string& bytes) {
+  EVP_MD_CTX* md = EVP_MD_CTX_new();
+  EVP_DigestInit_ex(md, EVP_sha256(), nullptr);
+  EVP_DigestUpdate(md, bytes.data(), bytes.size());
+  std::string s = hex_digest(md);
+  EVP_MD_CTX_free(md);
+  return s;
+}
+
+LineReader::LineReader(const std::string& path) {
+  f_ = std::fopen(path.c_str(), "rb");
+  if (!f_) malformed(0, "cannot open " + path);
+  md_ = EVP_MD_CTX_new();
+  EVP_DigestInit_ex(md_, EVP_sha256(), nullptr);
+}
+
+LineReader::~LineReader() {
+  if (f_) std::fclose(f_);
+  EVP_MD_CTX_free(md_);
+  std::free(line_buf_);
+}
+
+const std::vector<std::string_view>& LineReader::next() {
+  ssize_t n = getline(&line_buf_, &line_cap_, f_);
+  ++line_;
+  if (n <= 0) malformed(line_, "unexpected end of file");
+  EVP_DigestUpdate(md_, line_buf_, size_t(n));
+  if (line_buf_[n - 1] != '\n') malformed(line_, "truncated record (no newline at end of file)");
+  fields_.clear();
+  size_t start = 0, len = size_t(n - 1);
+  for (size_t i = 0; i <= len; ++i) {
+    unsigned char c = i < len ? (unsigned char)line_buf_[i] : ' ';
+    if (c != ' ' && (c < 0x21 || c > 0x7e)) malformed(line_, "byte " + std::to_string(c) + " is not printable ASCII");
+    if (c != ' ') continue;
+    if (i == start) malformed(line_, len ? "leading, trailing or double space" : "empty line");
+    fields_.emplace_back(line_buf_ + start, i - start);
+    start = i + 1;
+  }
+  return fields_;
+}
+
+std::string LineReader::raw(size_t n) {
+  std::string s(n, '\0');
+  if (n && std::fread(&s[0], 1, n, f_) != n) malformed(line_ + 1, "model text truncated");
+  EVP_DigestUpdate(md_, s.data(), n);
+  for (char c : s)
+    if (c == '\n') ++line_;
+  int c = std::fgetc(f_);  // the model text is followed by exactly one '\n'
+  if (c != '\n') malformed(line_ + 1, "model text not followed by a newline (wrong byte count?)");
+  EVP_DigestUpdate(md_, "\n", 1);
+  ++line_;
+  return s;
+}
+
+void LineReader::expect_eof() {
+  if (std::fgetc(f_) != EOF) malformed(line_ + 1, "content after 'end'");
+}
+
+std::string LineReader::file_sha256() { return hex_digest(md_); }
+
+int64_t parse_int(std::string_view s, long rec) {
+  size_t i = s[0] == '-' ? 1 : 0;
+  bool ok = s.size() > i && s.size() - i <= 18 && !(s[i] == '0' && s.size() > i + 1) && s != "-0";
+  int64_t v = 0;
+  for (size_t k = i; ok && k < s.size(); ++k) ok = s[k] >= '0' && s[k] <= '9', v = 10 * v + (s[k] - '0');
+  if (!ok) malformed(rec, "bad integer '" + std::string(s) + "'");
+  return i ? -v : v;
+}
+
+// The grammar of glibc's printf("%a") for a finite double: -?0x1(.H*[1-f])?p[+-]E for a
+// normal number (E in 0..1023 with no leading zero), 0x0.H*[1-f]p-1022 for a subnormal,
+// 0x0p+0 for zero. Anything else (decimal, upper case, trailing zeros, inf, nan) is
+// malformed. The value mantissa·2^(exponent − 4·digits) is exact in binary64.
+double parse_real(std::string_view s, long rec) {
+  auto hexval = [](char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1; };
+  size_t i = s[0] == '-' ? 1 : 0;
+  bool ok = s.size() >= i + 6 && s.substr(i, 2) == "0x" && (s[i + 2] == '0' || s[i + 2] == '1');
+  int lead = ok ? s[i + 2] - '0' : 0, digits = 0;
+  uint64_t mant = uint64_t(lead);
+  size_t k = i + 3;
+  if (ok && s[k] == '.') {
+    for (++k; k < s.size() && hexval(s[k]) >= 0; ++k, ++digits) mant = mant * 16 + uint64_t(hexval(s[k]));
+    ok = digits >= 1 && digits <= 13 && s[k - 1] != '0';
+  }
+  ok = ok && k + 2 < s.size() && s[k] == 'p' && (s[k + 1] == '+' || s[k + 1] == '-');
+  std::string_view e = ok ? s.substr(k + 2) : std::string_view();
+  ok = ok && !e.empty() && e.size() <= 4 && !(e[0] == '0' && e.size() > 1) &&
+       e.find_first_not_of("0123456789") == std::string_view::npos;
+  int exp = ok ? std::atoi(std::string(e).c_str()) * (s[k + 1] == '-' ? -1 : 1) : 0;
+  if (ok && lead == 1) ok = exp >= -1022 && exp <= 1023;
+  if (ok && lead == 0) ok = digits ? exp == -1022 : (exp == 0 && s[k + 1] == '+');
+  if (!ok) malformed(rec, "bad real '" + std::string(s) + "' (expected a %a hexadecimal float)");
+  double v = std::ldexp(double(mant), exp - 4 * digits);
+  return i ? -v : v;
+}
+
+const std::vector<std::string_view>& LineReader::expect(const std::vector<const char*>& words, size_t extra) {
+  const std::vector<std::string_view>& f = next();
+  bool ok = f.size() == words.size() + extra;
+  for (size_t i = 0; ok && i < words.size(); ++i) ok = f[i] == words[i];
+  if (!ok) {
+    std::string want;
+    for (auto w : words) want += std::string(want.empty() ? "" : " ") + w;
+    malformed(line_, "expected '" + want + "' and " + std::to_string(extra) + " field(s), found '" + std::string(f[0]) +
+                         "' with " + std::to_string(f.size()) + " field(s)");
+  }
+  return f;
+}
+
+}  // namespace cc

@@ -1,0 +1,57 @@
+// cert_reader.h — strict, streaming reader of the certificate's lexical layer (FORMAT.md,
+// "Lexical rules"): one record per line, single-space separated fields, canonical decimal
+// integers and canonical `%a` hexadecimal reals. It hashes every byte it consumes
+// (SHA-256 of the whole file) and numbers lines for error messages. Anything that does
+// not follow the rules is a Malformed error (exit 2); failed verifications are Rejected
+// errors (exit 1), thrown by the other modules with the record they concern.
+#pragma once
+
+#include <openssl/evp.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cc {
+
+struct CertError : std::runtime_error {
+  bool malformed;  // true: exit 2; false: exit 1 (REJECTED)
+  long record;
+  CertError(bool m, long r, const std::string& why) : std::runtime_error(why), malformed(m), record(r) {}
+};
+[[noreturn]] void malformed(long record, const std::string& why);
+[[noreturn]] void rejected(long record, const std::string& why);
+
+std::string sha256_hex(const std::string& bytes);
+
+class LineReader {
+ public:
+  explicit LineReader(const std::string& path);  // throws CertError (record 0) if unreadable
+  ~LineReader();
+  // Reads the next record and splits it into fields; checks the lexical rules.
+  const std::vector<std::string_view>& next();
+  // next(), then requires the leading fields == words and `extra` further fields.
+  const std::vector<std::string_view>& expect(const std::vector<const char*>& words, size_t extra);
+  // Reads exactly `n` raw bytes (the embedded model text) and counts its lines.
+  std::string raw(size_t n);
+  void expect_eof();           // nothing may follow the last record
+  long record() const { return line_; }  // number of the record read last
+  std::string file_sha256();   // after expect_eof
+
+ private:
+  FILE* f_ = nullptr;
+  EVP_MD_CTX* md_ = nullptr;
+  char* line_buf_ = nullptr;
+  size_t line_cap_ = 0;
+  long line_ = 0;
+  std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
+};
+
+// Field parsers; `rec` is the record number used in error messages.
+int64_t parse_int(std::string_view s, long rec);
+double parse_real(std::string_view s, long rec);
+
+}  // namespace cc

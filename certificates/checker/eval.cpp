@@ -1,0 +1,462 @@
+// eval.cpp — MPFI semantics of every node of the model language. Forward evaluation
+// reports, per node, whether the function is defined on the whole input (status 0), on
+// part of it (1: the value encloses the defined part; also used for unbounded or NaN
+// results, which become the entire line), or nowhere (2). Proof mode accepts only 0;
+// Refute mode fails only on 2, because a point where f is undefined is not a solution.
+// Derivatives are forward-mode interval AD; HC4 backward steps intersect each child with
+// a superset of its values compatible with the parent (a solution is never removed).
+#include "eval.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cc {
+
+static bool is_zero(const Ival& x) { return mpfr_zero_p(x.L()) && mpfr_zero_p(x.R()); }
+static void set_half_line(Ival& x) { mpfr_set_zero(x.L(), 1), mpfr_set_inf(x.R(), 1); }  // [0, +inf]
+
+Evaluator::Evaluator(const Model& m) : m_(m) {
+  const size_t N = m.nodes.size();
+  val_.resize(N);
+  cval_.resize(N);
+  der_.resize(N * m.vars.size());
+  for (auto& d : der_) mpfi_set_si(d, 0);  // entries of variables a node does not mention stay 0
+  cstat_.assign(N, 0);
+  tc_.resize(N);
+  mpfi_const_pi(pi_);
+  mpfi_mul_2ui(two_pi, pi_, 1);
+  // Constant sub-expressions are evaluated once, with their definedness status.
+  for (size_t id = 0; id < N; ++id) {
+    const Node& n = m.nodes[id];
+    if (n.dep) continue;
+    int st = std::max(n.a >= 0 ? cstat_[n.a] : 0, n.b >= 0 ? cstat_[n.b] : 0);
+    cstat_[id] = st == 2 ? 2 : std::max(st, apply(int(id), cval_[id], n.a >= 0 ? &cval_[n.a] : nullptr,
+                                                  n.b >= 0 ? &cval_[n.b] : nullptr));
+  }
+  all_eqs = closure(m.eqs);
+  for (int e : m.eqs) eq_prog.push_back(closure({e}));
+  for (int f : m.factors) factor_prog.push_back(closure({f}));
+}
+
+std::vector<int> Evaluator::closure(const std::vector<int>& roots) const {
+  std::vector<char> need(m_.nodes.size(), 0);
+  for (int r : roots) need[r] = 1;
+  std::vector<int> out;
+  for (int id = int(need.size()) - 1; id >= 0; --id) {
+    if (!need[id]) continue;
+    const Node& n = m_.nodes[id];
+    if (n.a >= 0) need[n.a] = 1;
+    if (n.b >= 0) need[n.b] = 1;
+    out.push_back(id);
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+bool Evaluator::constant(int id, Ival& out) const {
+  if (m_.nodes[id].dep || cstat_[id] != 0) return false;
+  mpfi_set(out, cval_[id]);
+  return true;
+}
+
+void Evaluator::power(Ival& r, const Ival& a, int k) {
+  unsigned long m = (unsigned long)(k < 0 ? -k : k);
+  if (m == 0) return (void)mpfi_set_si(r, 1);
+  // x^m is monotone in |x| (m even) or in x (m odd): power the ends with directed rounding.
+  if (m % 2 == 0) mpfi_abs(t4_, a);
+  else mpfi_set(t4_, a);
+  mpfr_pow_ui(r.L(), t4_.L(), m, MPFR_RNDD);
+  mpfr_pow_ui(r.R(), t4_.R(), m, MPFR_RNDU);
+  if (k < 0) mpfi_inv(r, r);  // callers guarantee 0 is not in a
+}
+
+// Widens v (an enclosure of sin or cos on a) to ±1 where an extremum t = (j + off)π may
+// lie in a (off = 1/2 for sin, 0 for cos; the value there is (−1)^j). Candidates j come
+// from a double computation with a margin of 1; each is confirmed in MPFI, and an unsure
+// case counts as inside (a sound overestimate).
+void Evaluator::extremum(Ival& v, const Ival& a, double off, double lo, double hi) {
+  const double PI = 3.141592653589793;
+  const double margin = 1e-9 * (1 + std::fabs(lo) + std::fabs(hi));  // ≫ double error
+  for (double j = std::floor(lo / PI - off) - 1; j <= std::ceil(hi / PI - off) + 1; ++j) {
+    double t = (j + off) * PI;
+    if (t < lo - margin || t > hi + margin) continue;
+    mpfi_mul_d(t3_, pi_, j + off);
+    if (mpfr_cmp(t3_.R(), a.L()) < 0 || mpfr_cmp(t3_.L(), a.R()) > 0) continue;
+    if (std::fmod(std::fabs(j), 2.0) == 0) mpfr_set_si(v.R(), 1, MPFR_RNDU);
+    else mpfr_set_si(v.L(), -1, MPFR_RNDD);
+  }
+}
+
+// sin and cos of an interval. Each end costs one correctly rounded mpfr_sin_cos in RNDN;
+// its ternary value says on which side of the exact value each result lies, so the
+// result and its neighbour enclose it. Wide or huge arguments go to MPFI.
+void Evaluator::sincos(const Ival& a, Ival& s, Ival& c) {
+  double lo = a.lo(), hi = a.hi();
+  if (!(hi - lo < 6.0) || !(std::fabs(lo) < 1e6) || !(std::fabs(hi) < 1e6)) {
+    mpfi_sin(s, a);
+    mpfi_cos(c, a);
+    return;
+  }
+  for (int e = 0; e < 2; ++e) {
+    int t = mpfr_sin_cos(t1_.L(), t2_.L(), e ? a.R() : a.L(), MPFR_RNDN);
+    mpfr_set(t1_.R(), t1_.L(), MPFR_RNDN);
+    mpfr_set(t2_.R(), t2_.L(), MPFR_RNDN);
+    if ((t & 3) == 1) mpfr_nextbelow(t1_.L());  // rounded above the exact sine
+    if ((t & 3) == 2) mpfr_nextabove(t1_.R());
+    if ((t >> 2) == 1) mpfr_nextbelow(t2_.L());
+    if ((t >> 2) == 2) mpfr_nextabove(t2_.R());
+    if (e == 0) mpfi_set(s, t1_), mpfi_set(c, t2_);
+    else mpfi_union(s, s, t1_), mpfi_union(c, c, t2_);
+  }
+  extremum(s, a, 0.5, lo, hi);
+  extremum(c, a, 0.0, lo, hi);
+}
+
+void Evaluator::trig(bool cosine, int child, const Ival& a, Ival& r) {
+  TrigCache& c = tc_[child];
+  if (!mpfr_equal_p(c.arg.L(), a.L()) || !mpfr_equal_p(c.arg.R(), a.R())) {  // NaN: never equal
+    sincos(a, c.sin, c.cos);
+    mpfi_set(c.arg, a);
+  }
+  mpfi_set(r, cosine ? c.cos : c.sin);
+}
+
+int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
+  const Node& n = m_.nodes[id];
+  int st = 0;
+  switch (n.op) {
+    case Op::Const:
+      if (mpfi_set_str(r, m_.literals[n.k].c_str(), 10) != 0)
+        throw ModelError("malformed number '" + m_.literals[n.k] + "'");
+      break;
+    case Op::Pi: mpfi_const_pi(r); break;
+    case Op::Var: break;  // handled by eval()
+    case Op::Add: mpfi_add(r, *a, *b); break;
+    case Op::Sub: mpfi_sub(r, *a, *b); break;
+    case Op::Mul:
+      if (n.a == n.b) mpfi_sqr(r, *a);
+      else mpfi_mul(r, *a, *b);
+      break;
+    case Op::Div:  // b ∋ 0: defined nowhere if b = [0, 0], else no information
+      if (b->has_zero()) return is_zero(*b) ? 2 : (r.entire(), 1);
+      mpfi_div(r, *a, *b);
+      break;
+    case Op::Min:
+      mpfr_min(r.L(), a->L(), b->L(), MPFR_RNDD);
+      mpfr_min(r.R(), a->R(), b->R(), MPFR_RNDU);
+      break;
+    case Op::Max:
+      mpfr_max(r.L(), a->L(), b->L(), MPFR_RNDD);
+      mpfr_max(r.R(), a->R(), b->R(), MPFR_RNDU);
+      break;
+    case Op::Neg: mpfi_neg(r, *a); break;
+    case Op::Sqr: mpfi_sqr(r, *a); break;
+    case Op::Pow:
+      if (n.k < 0 && a->has_zero()) return is_zero(*a) ? 2 : (r.entire(), 1);
+      power(r, *a, n.k);
+      break;
+    case Op::Sqrt:
+      if (mpfr_sgn(a->R()) < 0) return 2;
+      if (mpfr_sgn(a->L()) < 0) {  // evaluate on a ∩ [0, +inf]
+        mpfr_set_zero(t1_.L(), 1);
+        mpfr_set(t1_.R(), a->R(), MPFR_RNDU);
+        mpfi_sqrt(r, t1_);
+        st = 1;
+      } else {
+        mpfi_sqrt(r, *a);
+      }
+      break;
+    case Op::Log:
+      if (mpfr_sgn(a->R()) <= 0) return 2;
+      if (mpfr_sgn(a->L()) <= 0) {  // log on a ∩ (0, +inf]
+        mpfr_set_inf(r.L(), -1);
+        mpfr_log(r.R(), a->R(), MPFR_RNDU);
+        st = 1;
+      } else {
+        mpfi_log(r, *a);
+      }
+      break;
+    case Op::Asin:
+    case Op::Acos:
+      if (mpfr_cmp_si(a->R(), -1) < 0 || mpfr_cmp_si(a->L(), 1) > 0) return 2;
+      mpfi_interv_si(t1_, -1, 1);
+      if (!mpfi_is_inside(*a, t1_)) st = 1;
+      mpfi_intersect(t1_, *a, t1_);
+      if (n.op == Op::Asin) mpfi_asin(r, t1_);
+      else mpfi_acos(r, t1_);
+      break;
+    case Op::Exp: mpfi_exp(r, *a); break;
+    case Op::Sin: trig(false, n.a, *a, r); break;
+    case Op::Cos: trig(true, n.a, *a, r); break;
+    case Op::Tan: mpfi_tan(r, *a); break;  // a pole inside gives an unbounded result: st 1 below
+    case Op::Abs: mpfi_abs(r, *a); break;
+    case Op::Atan: mpfi_atan(r, *a); break;
+  }
+  if (mpfi_nan_p(r)) return r.entire(), 1;
+  return st == 0 && !r.bounded() ? 1 : st;
+}
+
+bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
+  for (int id : prog) {
+    const Node& n = m_.nodes[id];
+    Ival& r = val_[id];
+    int st;
+    if (!n.dep) mpfi_set(r, cval_[id]), st = cstat_[id];
+    else if (n.op == Op::Var) mpfi_set(r, box[n.k]), st = r.empty() ? 2 : r.bounded() ? 0 : 1;
+    else st = apply(id, r, n.a >= 0 ? &val_[n.a] : nullptr, n.b >= 0 ? &val_[n.b] : nullptr);
+    if (st == 2 || (st == 1 && mode == Mode::Proof)) return false;
+  }
+  return true;
+}
+
+bool Evaluator::eval_ad(const std::vector<int>& prog, const Ival* box, uint64_t dirs) {
+  dirs_ = dirs;
+  if (!eval(prog, box, Mode::Proof)) return false;
+  for (int id : prog)
+    if (!derive(id)) return false;
+  return true;
+}
+
+// Derivatives of node id w.r.t. the requested variables it mentions. A unary node is
+// g(a) with g' computed once into g_; non-differentiable points make the proof fail.
+bool Evaluator::derive(int id) {
+  const Node& n = m_.nodes[id];
+  const uint64_t need = n.dep & dirs_;
+  if (!need) return true;
+  const int nv = this->nv();
+  Ival* D = &der_[size_t(id) * nv];
+  if (n.op == Op::Var) {
+    mpfi_set_si(D[n.k], 1);
+    return true;
+  }
+  const Ival* A = &der_[size_t(n.a) * nv];
+  const Ival* B = n.b >= 0 ? &der_[size_t(n.b) * nv] : nullptr;
+  const Ival& a = val_[n.a];
+  const Ival& b = n.b >= 0 ? val_[n.b] : a;
+  const Ival& r = val_[id];
+  bool unary = true;
+  switch (n.op) {
+    case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Min: case Op::Max:
+      unary = false;
+      break;
+    case Op::Neg: mpfi_set_si(g_, -1); break;
+    case Op::Sqr: mpfi_mul_si(g_, a, 2); break;
+    case Op::Pow: power(g_, a, n.k - 1), mpfi_mul_si(g_, g_, n.k); break;
+    case Op::Sqrt:  // not differentiable at 0
+      if (r.has_zero()) return false;
+      mpfi_mul_si(g_, r, 2), mpfi_inv(g_, g_);
+      break;
+    case Op::Exp: mpfi_set(g_, r); break;
+    case Op::Log: mpfi_inv(g_, a); break;
+    case Op::Sin: trig(true, n.a, a, g_); break;
+    case Op::Cos: trig(false, n.a, a, g_), mpfi_neg(g_, g_); break;
+    case Op::Tan: mpfi_sqr(g_, r), mpfi_add_si(g_, g_, 1); break;
+    case Op::Abs:
+      if (!a.sign()) return false;
+      mpfi_set_si(g_, a.sign());
+      break;
+    case Op::Asin:
+    case Op::Acos:
+      mpfi_sqr(g_, a);
+      mpfi_si_sub(g_, 1, g_);
+      if (mpfr_sgn(g_.L()) <= 0) return false;
+      mpfi_sqrt(g_, g_);
+      mpfi_inv(g_, g_);
+      if (n.op == Op::Acos) mpfi_neg(g_, g_);
+      break;
+    case Op::Atan: mpfi_sqr(g_, a), mpfi_add_si(g_, g_, 1), mpfi_inv(g_, g_); break;
+    case Op::Const: case Op::Pi: case Op::Var: return true;
+  }
+  for (int v = 0; v < nv; ++v) {
+    if (!(need >> v & 1)) continue;
+    Ival& d = D[v];
+    if (unary) {
+      mpfi_mul(d, g_, A[v]);
+    } else if (n.op == Op::Add) {
+      mpfi_add(d, A[v], B[v]);
+    } else if (n.op == Op::Sub) {
+      mpfi_sub(d, A[v], B[v]);
+    } else if (n.op == Op::Mul) {
+      mpfi_mul(t1_, A[v], b);
+      mpfi_mul(t2_, a, B[v]);
+      mpfi_add(d, t1_, t2_);
+    } else if (n.op == Op::Div) {  // (a' - r b') / b
+      mpfi_mul(t1_, r, B[v]);
+      mpfi_sub(t1_, A[v], t1_);
+      mpfi_div(d, t1_, b);
+    } else {  // min/max: differentiable only where one argument is certainly smaller
+      bool a_less = mpfr_less_p(a.R(), b.L()), b_less = mpfr_less_p(b.R(), a.L());
+      if (!a_less && !b_less) return false;
+      mpfi_set(d, (a_less == (n.op == Op::Min)) ? A[v] : B[v]);
+    }
+    if (!d.bounded()) return false;
+  }
+  return true;
+}
+
+bool Evaluator::hc4(int eq, Ival* box) {
+  const std::vector<int>& prog = eq_prog[eq];
+  if (!eval(prog, box, Mode::Refute)) return false;
+  mpfi_set_si(t1_, 0);
+  if (!val_[m_.eqs[eq]].meet(t1_)) return false;
+  for (auto it = prog.rbegin(); it != prog.rend(); ++it)
+    if (!backward(*it, box)) return false;
+  return true;
+}
+
+// x ∩= t, ignoring a NaN t (no information); false when x becomes empty.
+static bool cut(Ival& x, const Ival& t) { return mpfi_nan_p(t) ? true : x.meet(t); }
+
+bool Evaluator::hull_both(Ival& a, const Ival& s) {
+  if (mpfi_nan_p(s)) return true;  // no information
+  mpfi_intersect(t2_, a, s);
+  mpfi_neg(t3_, s);
+  mpfi_intersect(t3_, a, t3_);
+  bool e2 = t2_.empty(), e3 = t3_.empty();
+  if (e2 && e3) return false;
+  if (e2) mpfi_set(a, t3_);
+  else if (e3) mpfi_set(a, t2_);
+  else mpfi_union(a, t2_, t3_);
+  return true;
+}
+
+bool Evaluator::backward(int id, Ival* box) {
+  const Node& n = m_.nodes[id];
+  if (!n.dep) return true;
+  Ival& r = val_[id];
+  Ival* a = n.a >= 0 ? &val_[n.a] : nullptr;
+  Ival* b = n.b >= 0 ? &val_[n.b] : nullptr;
+  switch (n.op) {
+    case Op::Var: return box[n.k].meet(r);
+    case Op::Add: return mpfi_sub(t1_, r, *b), cut(*a, t1_) && (mpfi_sub(t1_, r, *a), cut(*b, t1_));
+    case Op::Sub: return mpfi_add(t1_, r, *b), cut(*a, t1_) && (mpfi_sub(t1_, *a, r), cut(*b, t1_));
+    case Op::Neg: return mpfi_neg(t1_, r), cut(*a, t1_);
+    case Op::Mul:
+      if (n.a == n.b) goto square;
+      if (!b->has_zero()) {
+        mpfi_div(t1_, r, *b);
+        if (!cut(*a, t1_)) return false;
+      }
+      if (!a->has_zero()) {
+        mpfi_div(t1_, r, *a);
+        if (!cut(*b, t1_)) return false;
+      }
+      return true;
+    case Op::Div:  // a = r·b and b = a/r wherever a/b is defined
+      if (r.bounded()) {
+        mpfi_mul(t1_, r, *b);
+        if (!cut(*a, t1_)) return false;
+      }
+      if (!r.has_zero()) {
+        mpfi_div(t1_, *a, r);
+        if (!cut(*b, t1_)) return false;
+      }
+      return true;
+    case Op::Min:  // min(a, b) >= lo(r) forces a, b >= lo(r); max(a, b) <= hi(r) likewise
+      mpfr_set(t1_.L(), r.L(), MPFR_RNDD), mpfr_set_inf(t1_.R(), 1);
+      return cut(*a, t1_) && cut(*b, t1_);
+    case Op::Max:
+      mpfr_set_inf(t1_.L(), -1), mpfr_set(t1_.R(), r.R(), MPFR_RNDU);
+      return cut(*a, t1_) && cut(*b, t1_);
+    case Op::Sqr:
+    square:
+      return set_half_line(t1_), r.meet(t1_) && (mpfi_sqrt(t1_, r), hull_both(*a, t1_));
+    case Op::Pow: {
+      if (n.k < 0) return true;  // no projection: weak but sound
+      bool even = n.k % 2 == 0;
+      if (even) {
+        set_half_line(t1_);
+        if (!r.meet(t1_)) return false;
+      }
+      mpfr_rootn_ui(t1_.L(), r.L(), (unsigned long)n.k, MPFR_RNDD);
+      mpfr_rootn_ui(t1_.R(), r.R(), (unsigned long)n.k, MPFR_RNDU);
+      return even ? hull_both(*a, t1_) : cut(*a, t1_);
+    }
+    case Op::Sqrt: return set_half_line(t1_), r.meet(t1_) && (mpfi_sqr(t1_, r), cut(*a, t1_));
+    case Op::Exp: return set_half_line(t1_), r.meet(t1_) && (mpfi_log(t1_, r), cut(*a, t1_));
+    case Op::Log: return mpfi_exp(t1_, r), cut(*a, t1_);
+    case Op::Abs: return set_half_line(t1_), r.meet(t1_) && hull_both(*a, r);
+    case Op::Asin: return mpfi_sin(t1_, r), cut(*a, t1_);  // a = sin(asin a) ∈ sin(r)
+    case Op::Acos: return mpfi_cos(t1_, r), cut(*a, t1_);
+    case Op::Atan: return mpfi_tan(t1_, r), !t1_.bounded() || cut(*a, t1_);
+    case Op::Sin:
+    case Op::Cos:  // r ∩ [−1, 1], then the preimage of r in a: one branch, or all of them
+      mpfi_interv_si(t1_, -1, 1);
+      if (!r.meet(t1_)) return false;
+      trig(n.op == Op::Cos, n.a, *a, t4_);
+      if (mpfi_is_inside(t4_, r) > 0 || !(std::fabs(a->lo()) < 1e6 && std::fabs(a->hi()) < 1e6)) return true;
+      if (a->hi() - a->lo() < 3 && monotone_projection(n.op, r, *a, t4_)) return mpfr_cmp(a->L(), a->R()) <= 0;
+      return project_general(n.op, r, *a);
+    case Op::Tan: case Op::Const: case Op::Pi:
+      return true;
+  }
+  return true;
+}
+
+// out := enclosure of s·asin(y) + cπ (sin) or s·acos(y) + cπ (cos): one correctly rounded
+// RNDN call whose ternary value tells on which side the exact value lies.
+void Evaluator::branch_inverse(Op op, mpfr_srcptr y, int s, double c, Ival& out) {
+  int t = op == Op::Sin ? mpfr_asin(out.L(), y, MPFR_RNDN) : mpfr_acos(out.L(), y, MPFR_RNDN);
+  mpfr_set(out.R(), out.L(), MPFR_RNDN);
+  if (t > 0) mpfr_nextbelow(out.L());
+  if (t < 0) mpfr_nextabove(out.R());
+  if (s < 0) mpfi_neg(out, out);
+  mpfi_mul_d(t3_, pi_, c);
+  mpfi_add(out, out, t3_);
+}
+
+// When a provably lies in one monotone branch [(j+off)π, (j+1+off)π] of sin (off = 1/2)
+// or cos (off = 0), the preimage of r in a is an interval whose ends are branch inverses
+// of r's ends, needed only where r is narrower than the image fa of a. The branch
+// starts at an extremum of value (−1)^j, so the function decreases on it iff j is even.
+// Returns false (nothing done) when a is not provably inside one branch.
+bool Evaluator::monotone_projection(Op op, const Ival& r, Ival& a, const Ival& fa) {
+  const double PI = 3.141592653589793, off = op == Op::Sin ? 0.5 : 0.0;
+  double j = std::floor(0.5 * (a.lo() + a.hi()) / PI - off);
+  mpfi_mul_d(t3_, pi_, j + off);
+  if (mpfr_cmp(t3_.R(), a.L()) > 0) return false;
+  mpfi_mul_d(t3_, pi_, j + 1 + off);
+  if (mpfr_cmp(t3_.L(), a.R()) < 0) return false;
+  bool dec = std::fmod(std::fabs(j), 2.0) == 0;
+  int s = (op == Op::Sin) == dec ? -1 : 1;  // sin: −asin on decreasing branches; cos: −acos on increasing
+  double c = (op == Op::Cos && dec) ? j : j + 1;
+  if (dec ? mpfr_cmp(r.R(), fa.R()) < 0 : mpfr_cmp(r.L(), fa.L()) > 0) {
+    branch_inverse(op, dec ? r.R() : r.L(), s, c, t2_);
+    if (mpfr_cmp(t2_.L(), a.L()) > 0) mpfr_set(a.L(), t2_.L(), MPFR_RNDD);
+  }
+  if (dec ? mpfr_cmp(r.L(), fa.L()) > 0 : mpfr_cmp(r.R(), fa.R()) < 0) {
+    branch_inverse(op, dec ? r.L() : r.R(), s, c, t2_);
+    if (mpfr_cmp(t2_.R(), a.R()) < 0) mpfr_set(a.R(), t2_.R(), MPFR_RNDU);
+  }
+  return true;
+}
+
+// Otherwise a ∩= ∪k (s + 2kπ) ∪ (π − s + 2kπ) with s = asin(r) ⊆ [−π/2, π/2] (sin), or
+// ∪k (±s + 2kπ) with s = acos(r) ⊆ [0, π] (cos): every preimage of r. The pieces are MPFI
+// enclosures, and the k range (margin 2) covers every piece that can meet a (|a| < 1e6).
+bool Evaluator::project_general(Op op, const Ival& r, Ival& a) {
+  if (op == Op::Sin) mpfi_asin(t1_, r);
+  else mpfi_acos(t1_, r);
+  const double P = 6.283185307179586;
+  double kmin = std::floor(a.lo() / P) - 2, kmax = std::floor(a.hi() / P) + 2;
+  if (kmax - kmin > 10) return true;  // spans many periods: nothing to gain
+  bool any = false;
+  for (double k = kmin; k <= kmax; ++k)
+    for (int branch = 0; branch < 2; ++branch) {
+      if (branch == 0) mpfi_set(t2_, t1_);
+      else if (op == Op::Sin) mpfi_sub(t2_, pi_, t1_);
+      else mpfi_neg(t2_, t1_);
+      if (t2_.hi() + k * P < a.lo() - 1e-6 || t2_.lo() + k * P > a.hi() + 1e-6) continue;  // clearly misses a
+      mpfi_mul_si(t3_, two_pi, long(k));
+      mpfi_add(t2_, t2_, t3_);
+      mpfi_intersect(t2_, t2_, a);
+      if (t2_.empty()) continue;
+      if (any) mpfi_union(g_, g_, t2_);
+      else mpfi_set(g_, t2_);
+      any = true;
+    }
+  if (any) mpfi_set(a, g_);
+  return any;
+}
+
+}  // namespace cc

@@ -1,0 +1,42 @@
+// graph.h — the combinatorial half of the check: a union-find, the neighbourhood graph M
+// of FORMAT.md ("claim lower-bound") built by sort-and-sweep over the output boxes and
+// their 2π-shifted copies, the separated lower bound (11), and the filtering heuristic.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "ival.h"
+
+namespace cc {
+
+struct UnionFind {
+  std::vector<int> parent;
+  void reset(size_t n);
+  int find(int x);
+  void unite(int a, int b);
+};
+
+// Output boxes kept compactly as doubles, with their verified factor signs.
+struct OutBoxes {
+  int nv = 0, p = 0;
+  std::vector<double> lohi;    // 2·nv per box
+  std::vector<uint32_t> pos, neg;  // bit i: factor i verified > 0 (resp. < 0)
+  std::vector<uint8_t> solution;
+  size_t size() const { return solution.size(); }
+  const double* box(size_t i) const { return &lohi[i * 2 * nv]; }
+};
+
+// Pairs (a, b), a < b, such that for some shift k (k_v ∈ {−1, 0, 1} on periodic variables)
+// a meets b + 2πk with the shifted bounds rounded outward; a superset of the pairs that
+// share a point modulo 2π.
+std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::vector<bool>& periodic,
+                                                 const Ival& two_pi);
+// Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
+// with s, joined by M) holding a solution box whose signs are all verified and equal s.
+long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M);
+// Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
+long filtered_count(const std::vector<int64_t>& sizes);
+
+}  // namespace cc

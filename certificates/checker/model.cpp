@@ -1,0 +1,319 @@
+// model.cpp — lexer and recursive-descent parser of the model language, written for the
+// checker independently of the solver's. One statement per line (`#` comments); a
+// statement continues over newlines while a ( or [ is open. Grammar:
+//   expr := term (('+'|'-') term)*     term := unary (('*'|'/') unary)*
+//   unary := ('-'|'+') unary | power   power := primary ['^' ['-'] INTEGER]
+//   primary := NUMBER | pi | NAME | FUNC '(' expr ')' | (min|max) '(' expr ',' expr ')' | '(' expr ')'
+// Besides syntax it enforces what the proofs rely on: a square system, and periodic
+// variables entering only through sin/cos of sums (so f is 2π-periodic in them and the
+// 2π shifts of links and of the neighbourhood graph are sound).
+#include "model.h"
+
+#include <cctype>
+#include <map>
+#include <set>
+
+namespace cc {
+namespace {
+
+enum class Tok { Ident, Number, Punct, Newline, End };
+struct Token {
+  Tok kind;
+  std::string text;
+  int line, col;
+};
+
+[[noreturn]] void fail(int line, int col, const std::string& msg) {
+  throw ModelError(std::to_string(line) + ":" + std::to_string(col) + ": " + msg);
+}
+
+std::vector<Token> lex(const std::string& s) {
+  std::vector<Token> out;
+  int depth = 0, line = 1, col = 1;
+  size_t i = 0;
+  auto adv = [&]() {
+    if (s[i] == '\n') ++line, col = 1;
+    else ++col;
+    ++i;
+  };
+  auto digit = [&](size_t k) { return k < s.size() && std::isdigit((unsigned char)s[k]); };
+  while (i < s.size()) {
+    char c = s[i];
+    int l = line, co = col;
+    size_t b = i;
+    if (c == '#') {
+      while (i < s.size() && s[i] != '\n') adv();
+    } else if (c == '\n') {
+      if (depth == 0) out.push_back({Tok::Newline, "end of line", l, co});
+      adv();
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      adv();
+    } else if (std::isalpha((unsigned char)c) || c == '_') {
+      while (i < s.size() && (std::isalnum((unsigned char)s[i]) || s[i] == '_')) adv();
+      out.push_back({Tok::Ident, s.substr(b, i - b), l, co});
+    } else if (digit(i) || (c == '.' && digit(i + 1))) {
+      int dots = 0;
+      while (digit(i) || (i < s.size() && s[i] == '.')) dots += s[i] == '.', adv();
+      if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+        size_t k = i + 1;
+        if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+        if (digit(k)) {
+          while (i < k) adv();
+          while (digit(i)) adv();
+        }
+      }
+      if (dots > 1) fail(l, co, "malformed number '" + s.substr(b, i - b) + "'");
+      out.push_back({Tok::Number, s.substr(b, i - b), l, co});
+    } else if (std::string("+-*/^()[],=").find(c) != std::string::npos) {
+      if (c == '(' || c == '[') ++depth;
+      if ((c == ')' || c == ']') && depth > 0) --depth;
+      adv();
+      out.push_back({Tok::Punct, std::string(1, c), l, co});
+    } else {
+      fail(l, co, "unexpected character (byte " + std::to_string((unsigned char)c) + ")");
+    }
+  }
+  out.push_back({Tok::Newline, "end of line", line, col});
+  out.push_back({Tok::End, "end of file", line, col});
+  return out;
+}
+
+const std::map<std::string, Op> kFunctions = {
+    {"sqr", Op::Sqr}, {"sqrt", Op::Sqrt}, {"sin", Op::Sin},   {"cos", Op::Cos},
+    {"tan", Op::Tan}, {"exp", Op::Exp},   {"log", Op::Log},   {"abs", Op::Abs},
+    {"asin", Op::Asin}, {"acos", Op::Acos}, {"atan", Op::Atan}};
+const std::set<std::string> kReserved = {"robot", "constant", "let", "pose", "command", "equation",
+                                         "constraint", "factor", "in", "periodic", "pi", "min", "max"};
+
+class Parser {
+ public:
+  explicit Parser(const std::string& text) : t_(lex(text)) {}
+
+  Model run() {
+    while (peek().kind != Tok::End) {
+      if (peek().kind == Tok::Newline) ++p_;
+      else statement();
+    }
+    const Token& e = t_.back();
+    if (m_.name.empty()) fail(1, 1, "missing 'robot NAME' statement");
+    if (m_.pose.empty()) fail(e.line, e.col, "no pose variable");
+    if (m_.pose.size() != m_.command.size() || m_.command.size() != m_.eqs.size())
+      fail(e.line, e.col, "the system is not square (poses, commands and equations differ in number)");
+    check_periodic();
+    return std::move(m_);
+  }
+
+ private:
+  const Token& peek() const { return t_[p_]; }
+  bool punct(const char* s) const { return peek().kind == Tok::Punct && peek().text == s; }
+  [[noreturn]] void bad(const Token& t, const std::string& msg) { fail(t.line, t.col, msg); }
+  void expect(const char* s) {
+    if (!punct(s)) bad(peek(), std::string("expected '") + s + "', found '" + peek().text + "'");
+    ++p_;
+  }
+
+  int add(Op op, int a = -1, int b = -1, int k = 0) {
+    Node n{op, a, b, k, 0};
+    if (a >= 0) n.dep |= m_.nodes[a].dep;
+    if (b >= 0) n.dep |= m_.nodes[b].dep;
+    if (op == Op::Var) n.dep = uint64_t(1) << k;
+    m_.nodes.push_back(n);
+    return int(m_.nodes.size()) - 1;
+  }
+
+  std::string new_name() {
+    const Token& t = peek();
+    if (t.kind != Tok::Ident) bad(t, "expected a name, found '" + t.text + "'");
+    if (kReserved.count(t.text) || kFunctions.count(t.text)) bad(t, "'" + t.text + "' is reserved");
+    if (names_.count(t.text)) bad(t, "duplicate name '" + t.text + "'");
+    ++p_;
+    return t.text;
+  }
+
+  void statement() {
+    Token kw = peek();
+    if (kw.kind != Tok::Ident) bad(kw, "expected a statement, found '" + kw.text + "'");
+    ++p_;
+    const std::string& k = kw.text;
+    if (k == "robot") {
+      if (!m_.name.empty()) bad(kw, "duplicate 'robot' statement");
+      if (peek().kind != Tok::Ident && peek().kind != Tok::Number) bad(peek(), "expected the robot's name");
+      while (peek().kind != Tok::Newline) m_.name += t_[p_++].text;  // e.g. 3-RRR*
+    } else if (k == "constant" || k == "let") {
+      std::string name = new_name();
+      expect("=");
+      Token at = peek();
+      int e = expr();
+      if (k == "constant" && m_.nodes[e].dep) bad(at, "constant '" + name + "' depends on a variable");
+      names_[name] = e;
+    } else if (k == "pose" || k == "command") {
+      Var v;
+      v.name = new_name();
+      v.pose = k == "pose";
+      if (!(peek().kind == Tok::Ident && peek().text == "in")) bad(peek(), "expected 'in'");
+      ++p_;
+      expect("[");
+      v.lo = const_expr();
+      expect(",");
+      v.hi = const_expr();
+      expect("]");
+      if (peek().kind == Tok::Ident && peek().text == "periodic") v.periodic = true, ++p_;
+      int index = int(m_.vars.size());
+      if (index >= 64) bad(kw, "too many variables");
+      m_.vars.push_back(v);
+      (v.pose ? m_.pose : m_.command).push_back(index);
+      names_[v.name] = add(Op::Var, -1, -1, index);
+      var_tok_.push_back(kw);
+    } else if (k == "equation") {
+      Token at = peek();
+      int lhs = expr();
+      expect("=");
+      int e = add(Op::Sub, lhs, expr());
+      if (!m_.nodes[e].dep) bad(at, "equation does not depend on any variable");
+      m_.eqs.push_back(e);
+    } else if (k == "factor") {
+      Token at = peek();
+      int e = expr();
+      if (!m_.nodes[e].dep) bad(at, "factor does not depend on any variable");
+      m_.factors.push_back(e);
+    } else {
+      bad(kw, "unknown statement '" + k + "'");
+    }
+    if (peek().kind != Tok::Newline) bad(peek(), "expected end of line, found '" + peek().text + "'");
+    ++p_;
+  }
+
+  int const_expr() {
+    Token at = peek();
+    int e = expr();
+    if (m_.nodes[e].dep) bad(at, "a domain bound must be a constant expression");
+    return e;
+  }
+  int expr() {
+    struct Depth {  // bounded recursion: a hostile model must not overflow the stack
+      int& d;
+      ~Depth() { --d; }
+    } guard{++depth_};
+    if (depth_ > 200) bad(peek(), "expression nested too deeply");
+    int a = term();
+    while (punct("+") || punct("-")) {
+      Op op = t_[p_++].text == "+" ? Op::Add : Op::Sub;
+      a = add(op, a, term());
+    }
+    return a;
+  }
+  int term() {
+    int a = unary();
+    while (punct("*") || punct("/")) {
+      Op op = t_[p_++].text == "*" ? Op::Mul : Op::Div;
+      a = add(op, a, unary());
+    }
+    return a;
+  }
+  int unary() {
+    int signs = 0;
+    for (; punct("-") || punct("+"); ++p_) signs += punct("-");
+    int a = power();
+    return signs % 2 ? add(Op::Neg, a) : a;
+  }
+  int power() {
+    int a = primary();
+    if (!punct("^")) return a;
+    ++p_;
+    bool neg = punct("-");
+    if (neg) ++p_;
+    const Token& t = peek();
+    if (t.kind != Tok::Number || t.text.find_first_not_of("0123456789") != std::string::npos)
+      bad(t, "exponent after '^' must be an integer");
+    if (t.text.size() > 4) bad(t, "exponent too large");
+    ++p_;
+    int k = std::stoi(t.text) * (neg ? -1 : 1);
+    if (k == 0) {  // x^0 = 1
+      m_.literals.push_back("1");
+      return add(Op::Const, -1, -1, int(m_.literals.size()) - 1);
+    }
+    if (k == 1) return a;
+    return k == 2 ? add(Op::Sqr, a) : add(Op::Pow, a, -1, k);
+  }
+  int primary() {
+    Token t = peek();
+    ++p_;
+    if (t.kind == Tok::Number) {
+      m_.literals.push_back(t.text);
+      return add(Op::Const, -1, -1, int(m_.literals.size()) - 1);
+    }
+    if (t.kind == Tok::Punct && t.text == "(") {
+      int a = expr();
+      expect(")");
+      return a;
+    }
+    if (t.kind != Tok::Ident) bad(t, "expected an expression, found '" + t.text + "'");
+    if (t.text == "pi") return add(Op::Pi);
+    auto f = kFunctions.find(t.text);
+    if (f != kFunctions.end()) {
+      expect("(");
+      int a = expr();
+      expect(")");
+      return add(f->second, a);
+    }
+    if (t.text == "min" || t.text == "max") {
+      expect("(");
+      int a = expr();
+      expect(",");
+      int b = expr();
+      expect(")");
+      return add(t.text == "min" ? Op::Min : Op::Max, a, b);
+    }
+    auto it = names_.find(t.text);
+    if (it == names_.end() || punct("(")) bad(t, "unknown name '" + t.text + "'");
+    return it->second;
+  }
+
+  // f is 2π-periodic in a periodic variable if every use of it is inside sin/cos, through
+  // sums only. bare[id]: the variables that reach node id through +, - and negation only.
+  void check_periodic() {
+    uint64_t periodic = 0;
+    for (size_t v = 0; v < m_.vars.size(); ++v)
+      if (m_.vars[v].periodic) periodic |= uint64_t(1) << v;
+    const size_t N = m_.nodes.size();
+    std::vector<uint64_t> bare(N, 0);
+    std::vector<char> live(N, 0);
+    for (size_t id = 0; id < N; ++id) {
+      const Node& n = m_.nodes[id];
+      if (n.op == Op::Var) bare[id] = n.dep;
+      if (n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg) bare[id] = bare[n.a] | (n.b >= 0 ? bare[n.b] : 0);
+    }
+    for (auto* roots : {&m_.eqs, &m_.factors})
+      for (int r : *roots) {
+        live[r] = 1;
+        if (bare[r] & periodic) fail_periodic(bare[r] & periodic);
+      }
+    for (size_t id = N; id-- > 0;) {
+      if (!live[id]) continue;
+      const Node& n = m_.nodes[id];
+      if (n.a >= 0) live[n.a] = 1;
+      if (n.b >= 0) live[n.b] = 1;
+      bool wraps = n.op == Op::Sin || n.op == Op::Cos || n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg;
+      uint64_t under = (n.a >= 0 ? bare[n.a] : 0) | (n.b >= 0 ? bare[n.b] : 0);
+      if (!wraps && (under & periodic)) fail_periodic(under & periodic);
+    }
+  }
+  [[noreturn]] void fail_periodic(uint64_t vars) {
+    int v = 0;
+    while (!(vars >> v & 1)) ++v;
+    bad(var_tok_[v], "periodic variable '" + m_.vars[v].name + "' must appear only inside sin() or cos()");
+  }
+
+  std::vector<Token> t_;
+  size_t p_ = 0;
+  Model m_;
+  std::map<std::string, int> names_;
+  std::vector<Token> var_tok_;
+  int depth_ = 0;
+};
+
+}  // namespace
+
+Model parse_model(const std::string& text) { return Parser(text).run(); }
+
+}  // namespace cc

@@ -1,0 +1,50 @@
+// model.h — the checker's own representation of a robot model: an expression DAG whose
+// children always have smaller ids than their parents (so increasing id order is a forward
+// evaluation order), the variables in declaration order, the equations (lhs - rhs) and the
+// user factors. The parser is purely syntactic: literals are kept as decimal strings and
+// turned into enclosing MPFI intervals by the evaluator (mpfi_set_str), never via strtod.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cc {
+
+enum class Op : uint8_t {
+  Const, Pi, Var, Add, Sub, Mul, Div, Min, Max,
+  Neg, Sqr, Sqrt, Sin, Cos, Tan, Exp, Log, Abs, Asin, Acos, Atan, Pow
+};
+
+struct Node {
+  Op op;
+  int a = -1, b = -1;
+  int k = 0;         // Var: variable index; Const: literal index; Pow: exponent
+  uint64_t dep = 0;  // bit v: the node mentions variable v (after expanding names)
+};
+
+struct Var {
+  std::string name;
+  bool pose = false, periodic = false;
+  int lo = -1, hi = -1;  // nodes of the declared bounds (constant expressions)
+};
+
+struct Model {
+  std::string name;
+  std::vector<Node> nodes;
+  std::vector<std::string> literals;
+  std::vector<Var> vars;
+  std::vector<int> pose, command;  // variable indices, declaration order
+  std::vector<int> eqs, factors;   // root nodes
+  int n() const { return int(eqs.size()); }
+};
+
+struct ModelError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Parses the model language; throws ModelError("LINE:COL: message").
+Model parse_model(const std::string& text);
+
+}  // namespace cc

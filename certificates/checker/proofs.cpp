@@ -1,0 +1,278 @@
+// proofs.cpp — Hansen–Sengupta (proof and contraction), strong regularity, factor
+// enclosures and refutation. Preconditioners are plain doubles: the recorded ones are
+// hints, and the checker's own (for refutation) come from a small Gauss–Jordan inverse of
+// the midpoint matrix; any real matrix is sound because every product that feeds a
+// verdict is an MPFI operation (mpfi_mul_d is exact-input, outward-rounded output).
+#include "proofs.h"
+
+#include <cmath>
+
+namespace cc {
+
+// Approximate inverse of the n×n matrix M (row major) by Gauss–Jordan with partial
+// pivoting, in double. Only a heuristic choice: its result is never trusted.
+static bool invert(std::vector<double> M, int n, std::vector<double>& inv) {
+  inv.assign(size_t(n) * n, 0.0);
+  for (int i = 0; i < n; ++i) inv[i * n + i] = 1;
+  for (int c = 0; c < n; ++c) {
+    int p = c;
+    for (int r = c + 1; r < n; ++r)
+      if (std::fabs(M[r * n + c]) > std::fabs(M[p * n + c])) p = r;
+    double piv = M[p * n + c];
+    if (piv == 0 || !std::isfinite(piv)) return false;
+    for (int k = 0; k < n; ++k) {
+      std::swap(M[c * n + k], M[p * n + k]);
+      std::swap(inv[c * n + k], inv[p * n + k]);
+    }
+    for (int k = 0; k < n; ++k) M[c * n + k] /= piv, inv[c * n + k] /= piv;
+    for (int r = 0; r < n; ++r) {
+      double f = M[r * n + c];
+      if (r == c || f == 0) continue;
+      for (int k = 0; k < n; ++k) M[r * n + k] -= f * M[c * n + k], inv[r * n + k] -= f * inv[c * n + k];
+    }
+  }
+  for (double v : inv)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+// Determinant by cofactor expansion along the first row (MPFI throughout).
+static void det(const std::vector<Ival>& M, int n, Ival& out) {
+  if (n == 1) {
+    mpfi_set(out, M[0]);
+    return;
+  }
+  mpfi_set_si(out, 0);
+  std::vector<Ival> minor(size_t(n - 1) * (n - 1));
+  Ival sub, term;
+  for (int j = 0; j < n; ++j) {
+    int k = 0;
+    for (int r = 1; r < n; ++r)
+      for (int c = 0; c < n; ++c)
+        if (c != j) minor[k++] = M[r * n + c];
+    det(minor, n - 1, sub);
+    mpfi_mul(term, M[j], sub);
+    if (j % 2) mpfi_sub(out, out, term);
+    else mpfi_add(out, out, term);
+  }
+}
+
+Prover::Prover(Evaluator& ev) : ev_(ev), m_(ev.model()), n_(m_.n()), nv_(ev.nv()) {
+  box.resize(nv_);
+  w_.resize(nv_);
+  y.resize(n_);
+  Jx_.resize(size_t(n_) * n_);
+  Jq_.resize(size_t(n_) * n_);
+  A_.resize(size_t(n_) * n_);
+  b_.resize(n_);
+  for (int j : m_.command) cmd_mask_ |= uint64_t(1) << j;
+  all_mask_ = nv_ >= 64 ? ~uint64_t(0) : (uint64_t(1) << nv_) - 1;
+}
+
+void Prover::load(const double* lohi) {
+  for (int v = 0; v < nv_; ++v) box[v].set(lohi[2 * v], lohi[2 * v + 1]);
+}
+
+void Prover::product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out) {
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j) {
+      Ival& o = out[i * n_ + j];
+      mpfi_set_si(o, 0);
+      for (int k = 0; k < n_; ++k) mpfi_mul_d(t1_, J[k * n_ + j], C[i * n_ + k]), mpfi_add(o, o, t1_);
+    }
+}
+
+// b_ := C·f with f the values of the equations just evaluated.
+void Prover::rhs(const double* C) {
+  for (int i = 0; i < n_; ++i) {
+    mpfi_set_si(b_[i], 0);
+    for (int k = 0; k < n_; ++k) mpfi_mul_d(t1_, ev_.val(m_.eqs[k]), C[i * n_ + k]), mpfi_add(b_[i], b_[i], t1_);
+  }
+}
+
+const char* Prover::newton(const double* Q, const double* C) {
+  const int n = n_;
+  w_ = box;
+  for (int j = 0; j < n; ++j) w_[m_.command[j]].set(Q[2 * j], Q[2 * j + 1]);
+  if (!ev_.eval_ad(ev_.all_eqs, w_.data(), cmd_mask_)) return "Fq is not defined on (x, Q~)";
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) Jq_[i * n + j] = ev_.der(m_.eqs[i], m_.command[j]);
+  product(Jq_, C, A_);
+  // q̌: the binary64 midpoint of Q~, clamped into it (any point of Q~ is sound).
+  std::vector<double> qc(n);
+  for (int j = 0; j < n; ++j) {
+    double lo = Q[2 * j], hi = Q[2 * j + 1], c = lo + 0.5 * (hi - lo);
+    qc[j] = !(c >= lo) ? lo : !(c <= hi) ? hi : c;
+    w_[m_.command[j]].set(qc[j], qc[j]);
+  }
+  if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return "f is not defined at (x, q-check)";
+  rhs(C);
+  // Gauss–Seidel in command order; components j < i are intersected with Q~_j before use.
+  for (int i = 0; i < n; ++i) {
+    const Ival& aii = A_[i * n + i];
+    if (aii.has_zero() || !aii.bounded()) return "a diagonal entry of C*Fq contains 0";
+    mpfi_set(t1_, b_[i]);
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      t2_.set(Q[2 * j], Q[2 * j + 1]);
+      if (j < i && !t2_.meet(y[j])) return "Gauss-Seidel step left Q~";
+      mpfi_sub_d(t2_, t2_, qc[j]);
+      mpfi_mul(t2_, t2_, A_[i * n + j]);
+      mpfi_add(t1_, t1_, t2_);
+    }
+    mpfi_div(t1_, t1_, aii);
+    mpfi_d_sub(y[i], qc[i], t1_);
+    if (!y[i].bounded() || y[i].empty()) return "Hansen-Sengupta image is unbounded";
+  }
+  return nullptr;
+}
+
+bool Prover::jacobians() {
+  if (!ev_.eval_ad(ev_.all_eqs, box.data(), all_mask_)) return false;
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j) {
+      Jx_[i * n_ + j] = ev_.der(m_.eqs[i], m_.pose[j]);
+      Jq_[i * n_ + j] = ev_.der(m_.eqs[i], m_.command[j]);
+    }
+  return true;
+}
+
+// Row-wise strict diagonal dominance of C·J: mig(M_ii) > Σ_{j≠i} mag(M_ij), compared on
+// the outward-rounded bounds (left end of |M_ii| against the right end of the sum).
+bool Prover::dominant(const std::vector<Ival>& J, const double* C) {
+  product(J, C, A_);
+  for (int i = 0; i < n_; ++i) {
+    mpfi_set_si(t2_, 0);
+    for (int j = 0; j < n_; ++j) {
+      if (!A_[i * n_ + j].bounded()) return false;
+      if (j == i) continue;
+      mpfi_abs(t1_, A_[i * n_ + j]);
+      mpfi_add(t2_, t2_, t1_);
+    }
+    mpfi_abs(t1_, A_[i * n_ + i]);
+    if (!(mpfr_cmp(t1_.L(), t2_.R()) > 0)) return false;
+  }
+  return true;
+}
+
+const char* Prover::regular(const double* CX, const double* CQ) {
+  if (!jacobians()) return "Jacobian not defined on the box";
+  if (!dominant(Jx_, CX)) return "C_X*Fx is not strictly diagonally dominant";
+  if (!dominant(Jq_, CQ)) return "C_Q*Fq is not strictly diagonally dominant";
+  return nullptr;
+}
+
+bool Prover::factor(const Factor& f, bool jac, Ival& out) {
+  if (f.kind == Factor::User) {
+    if (!ev_.eval(ev_.factor_prog[f.arg], box.data(), Mode::Proof)) return false;
+    mpfi_set(out, ev_.val(m_.factors[f.arg]));
+    return true;
+  }
+  if (!jac && !jacobians()) return false;
+  const std::vector<Ival>& J = (f.kind == Factor::DetFx || f.kind == Factor::DiagFx) ? Jx_ : Jq_;
+  if (f.kind == Factor::DetFx || f.kind == Factor::DetFq) det(J, n_, out);
+  else mpfi_set(out, J[f.arg * n_ + f.arg]);
+  return out.bounded();
+}
+
+// Hansen–Sengupta contraction of the commands of b (x an interval parameter), with the
+// checker's own preconditioner. −1: no solution in b; 0: not applicable; 1: applied.
+int Prover::hs_contract(std::vector<Ival>& b) {
+  const int n = n_;
+  if (!ev_.eval_ad(ev_.all_eqs, b.data(), cmd_mask_)) return 0;  // f must be C¹ on b
+  std::vector<double> M(size_t(n) * n), C;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      Jq_[i * n + j] = ev_.der(m_.eqs[i], m_.command[j]);
+      M[i * n + j] = 0.5 * (Jq_[i * n + j].lo() + Jq_[i * n + j].hi());
+    }
+  if (!invert(M, n, C)) return 0;
+  product(Jq_, C.data(), A_);
+  std::vector<Ival> qc(n);
+  w_ = b;
+  for (int j = 0; j < n; ++j) {  // the centre: the MPFR midpoint, a point of b
+    mpfi_mid(qc[j].L(), b[m_.command[j]]);
+    mpfr_set(qc[j].R(), qc[j].L(), MPFR_RNDN);
+    w_[m_.command[j]] = qc[j];
+  }
+  if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return 0;
+  rhs(C.data());
+  for (int i = 0; i < n; ++i) {
+    const Ival& aii = A_[i * n + i];
+    if (aii.has_zero()) continue;
+    mpfi_set(t1_, b_[i]);
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      mpfi_sub(t2_, b[m_.command[j]], qc[j]);
+      mpfi_mul(t2_, t2_, A_[i * n + j]);
+      mpfi_add(t1_, t1_, t2_);
+    }
+    mpfi_div(t1_, t1_, aii);
+    mpfi_sub(t2_, qc[i], t1_);
+    if (mpfi_nan_p(t2_)) continue;
+    if (!b[m_.command[i]].meet(t2_)) return -1;
+  }
+  return 1;
+}
+
+// HC4 over all equations until no variable shrinks by more than 1%, then a
+// Hansen–Sengupta contraction; repeated while either makes progress.
+bool Prover::contract(std::vector<Ival>& b) {
+  std::vector<double> w(nv_), w2(nv_);
+  auto widths = [&](std::vector<double>& out) {
+    for (int v = 0; v < nv_; ++v) out[v] = b[v].hi() - b[v].lo();
+  };
+  auto shrank = [&]() {
+    for (int v = 0; v < nv_; ++v)
+      if (w2[v] < 0.99 * w[v]) return true;
+    return false;
+  };
+  // Cheapest test first: a natural evaluation of each equation excluding 0.
+  if (!ev_.eval(ev_.all_eqs, b.data(), Mode::Refute)) return false;
+  for (int e : m_.eqs)
+    if (ev_.val(e).sign()) return false;
+  widths(w);
+  for (int round = 0; round < 50; ++round) {
+    for (int i = 0; i < n_; ++i)
+      if (!ev_.hc4(i, b.data())) return false;
+    widths(w2);
+    if (!shrank()) {
+      if (hs_contract(b) < 0) return false;
+      widths(w2);
+      if (!shrank()) break;
+    }
+    w = w2;
+  }
+  return true;
+}
+
+bool Prover::refute_rec(std::vector<Ival>& b, int depth, int& budget) {
+  ++refute_boxes;
+  if (!contract(b)) return true;
+  if (depth >= 12 || budget < 2) return false;
+  int v = 0;
+  double best = -1;
+  for (int k = 0; k < nv_; ++k) {
+    double w = b[k].hi() - b[k].lo();
+    if (w > best) best = w, v = k;
+  }
+  if (!(best > 0)) return false;
+  std::vector<Ival> c = b;
+  mpfr_t mid;
+  mpfr_init2(mid, mpfi_get_prec(b[v]));
+  mpfi_mid(mid, b[v]);
+  mpfr_set(b[v].R(), mid, MPFR_RNDU);
+  mpfr_set(c[v].L(), mid, MPFR_RNDD);
+  mpfr_clear(mid);
+  budget -= 2;
+  return refute_rec(b, depth + 1, budget) && refute_rec(c, depth + 1, budget);
+}
+
+bool Prover::refute() {
+  ++refutations;
+  std::vector<Ival> b = box;
+  int budget = 4096 - 1;
+  return refute_rec(b, 0, budget);
+}
+
+}  // namespace cc

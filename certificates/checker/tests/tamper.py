@@ -1,0 +1,367 @@
+#!/usr/bin/python3
+"""tamper.py — mutation tests of check_cert.
+
+Usage: tamper.py CHECK_CERT TESTS_DIR WORKDIR [ASPECTS ROBOTS_DIR]
+
+Each mutation takes a valid certificate (a real PRRP certificate solved by ASPECTS when it
+is given, and the golden certificates of TESTS_DIR/valid), changes it, and states the exit
+code check_cert must give: 1 (REJECTED) for a certificate that parses but claims something
+false, 2 (MALFORMED) for one that breaks the format, 0 for a changed hint that still proves
+every claim. Every mutation must change the file and be applicable; the script fails
+otherwise, so the suite cannot silently shrink.
+"""
+import hashlib
+import math
+import os
+import subprocess
+import sys
+
+
+def hx(v):
+    if v == 0:
+        return "-0x0p+0" if math.copysign(1, v) < 0 else "0x0p+0"
+    mant, exp = float.hex(v).split("p")
+    if "." in mant:
+        mant = mant.rstrip("0").rstrip(".")
+    return mant + "p" + exp
+
+
+class Cert:
+    """A certificate as lines; records are the lines after 'end-model'."""
+
+    def __init__(self, text):
+        self.lines = text.split("\n")
+        assert self.lines[-1] == ""
+        self.lines.pop()
+        self.body = self.lines.index("end-model") + 1
+        self.n = None
+
+    def text(self):
+        return "\n".join(self.lines) + "\n"
+
+    def find(self, kind, start=None):
+        return [i for i in range(start or self.body, len(self.lines)) if self.lines[i].split(" ")[0] == kind]
+
+    def fields(self, i):
+        return self.lines[i].split(" ")
+
+    def set(self, i, fields):
+        self.lines[i] = " ".join(fields)
+
+    def rehash(self):
+        """Recomputes 'model BYTES SHA' from the embedded lines and the 'end' count."""
+        data = "\n".join(self.lines[3:self.body - 1]).encode()  # the text before the separator
+        self.lines[2] = "model %d %s" % (len(data), hashlib.sha256(data).hexdigest())
+        return self
+
+    def fix_end(self):
+        self.lines[-1] = "end %d" % (len(self.lines) - 1)
+        return self
+
+
+def dims(c):
+    """n (equations) and nv (variables) from the domain record and an S record."""
+    nv = (len(c.fields(c.find("domain")[0])) - 1) // 2
+    return nv // 2, nv
+
+
+def s_parts(c, i):
+    n, _ = dims(c)
+    f = c.fields(i)
+    Q = [float.fromhex(x) for x in f[3:3 + 2 * n]]
+    img = [float.fromhex(x) for x in f[3 + 2 * n:3 + 4 * n]]
+    return f, n, Q, img
+
+
+# ------------------------------------------------------------------ mutations
+# Each returns the new text; `c` is a fresh Cert of the base.
+
+def hash_digit(c):
+    f = c.fields(2)
+    f[2] = ("0" if f[2][0] != "0" else "1") + f[2][1:]
+    c.set(2, f)
+    return c.text()
+
+
+def model_changed(c, rehash):
+    i = next(k for k in range(3, c.body) if c.lines[k].startswith("constant l = 1"))
+    c.lines[i] = "constant l = 2"
+    return (c.rehash() if rehash else c).text()
+
+
+def model_unparsable(c):
+    i = next(k for k in range(3, c.body) if c.lines[k].startswith("equation"))
+    c.lines[i] = c.lines[i].replace("=", "= +", 1).replace("^2", "^^2", 1)
+    return c.rehash().text()
+
+
+def replace_first(c, kind, fn):
+    i = c.find(kind)[0]
+    f = c.fields(i)
+    fn(f)
+    c.set(i, f)
+    return c.text()
+
+
+def sign_flip(c):
+    i = next(i for i in c.find("S") if "+" in c.fields(i)[2] or "-" in c.fields(i)[2])
+    f = c.fields(i)
+    f[2] = f[2].replace("+", "x").replace("-", "+").replace("x", "-")
+    c.set(i, f)
+    return c.text()
+
+
+def widen_across_singularity(c):
+    """PRRP: widen the image of the S box nearest q = 0 (Fq = 2q) across it."""
+    best = min(c.find("S"), key=lambda i: min(abs(v) for v in s_parts(c, i)[3]))
+    f, n, Q, img = s_parts(c, best)
+    m = max(abs(img[0]), abs(img[1]))
+    f[3:5] = [hx(min(Q[0], -m) - 0.01), hx(max(Q[1], m) + 0.01)]
+    f[5:7] = [hx(-m), hx(m)]
+    c.set(best, f)
+    return c.text()
+
+
+def slab_holds_solution(c):
+    """PRRP: a contraction of q right before an S record, moved into the solution's range."""
+    for i in c.find("S"):
+        if c.fields(i - 1)[0] == "P" and c.fields(i - 1)[1] == "1":
+            f, n, Q, img = s_parts(c, i)
+            p = c.fields(i - 1)
+            p[2] = hx(0.5 * (img[0] + img[1]))
+            c.set(i - 1, p)
+            return c.text()
+    raise AssertionError("no P on q before an S record")
+
+
+def s_to_discard(c):
+    i = c.find("S")[len(c.find("S")) // 2]
+    c.lines[i] = "X hs"
+    return c.text()
+
+
+def link_other_aspect(c):
+    """A K record whose B is replaced by a box of another CSNC (record order kept)."""
+    ks = c.find("K")
+    comps = [set(map(int, c.fields(j)[3:])) for j in c.find("csnc")]
+    pairs = [tuple(map(int, c.fields(i)[1:3])) for i in ks]
+    for k, i in enumerate(ks):
+        a = pairs[k][0]
+        mine = next(s for s in comps if a in s)
+        for b in sorted(x for s in comps if s is not mine for x in s if x > a):
+            if (k == 0 or pairs[k - 1] < (a, b)) and (k + 1 == len(ks) or (a, b) < pairs[k + 1]):
+                f = c.fields(i)
+                f[2] = str(b)
+                c.set(i, f)
+                return c.text()
+    raise AssertionError("no order-preserving replacement")
+
+
+def merge_components(c):
+    cs = c.find("csnc")
+    ids = sorted(set(map(int, c.fields(cs[0])[3:])) | set(map(int, c.fields(cs[1])[3:])))
+    c.lines[cs[0]] = "csnc 0 %d %s" % (len(ids), " ".join(map(str, ids)))
+    del c.lines[cs[1]]
+    for k, j in enumerate(c.find("csnc")):
+        f = c.fields(j)
+        f[1] = str(k)
+        c.set(j, f)
+    c.lines[c.find("csncs")[0]] = "csncs %d" % len(c.find("csnc"))
+    c.fix_end()
+    return c.text()
+
+
+def box_twice(c):
+    """The last component listed twice: its boxes are then in two components."""
+    cs = c.find("csnc")
+    f = c.fields(cs[-1])
+    f[1] = str(int(f[1]) + 1)
+    c.lines.insert(cs[-1] + 1, " ".join(f))
+    c.lines[c.find("csncs")[0]] = "csncs %d" % (len(cs) + 1)
+    c.fix_end()
+    return c.text()
+
+
+def claim(c, which, delta):
+    i = next(i for i in c.find("claim") if c.fields(i)[1] == which)
+    f = c.fields(i)
+    f[2] = str(int(f[2]) + delta)
+    c.set(i, f)
+    return c.text()
+
+
+def perturb_hints(c, scale_c, widen_q):
+    """Preconditioners times (1 + scale_c); Q~ widened by widen_q of its width."""
+    n, nv = dims(c)
+    for i in c.find("S") + c.find("K"):
+        f = c.fields(i)
+        if f[0] == "S":
+            qs, cs = range(3, 3 + 2 * n, 2), range(3 + 4 * n, len(f))
+        else:
+            qs, cs = range(4 + n, 4 + 3 * n, 2), range(4 + 3 * n, len(f))
+        for k in cs:
+            f[k] = hx(float.fromhex(f[k]) * (1 + scale_c))
+        for k in qs:
+            lo, hi = float.fromhex(f[k]), float.fromhex(f[k + 1])
+            f[k], f[k + 1] = hx(lo - widen_q * (hi - lo)), hx(hi + widen_q * (hi - lo))
+        c.set(i, f)
+    return c.text()
+
+
+def narrow_images(c):
+    """Every S record's IMAGE shrunk by 10% of its width on each side: a false claim."""
+    n, _ = dims(c)
+    for i in c.find("S"):
+        f = c.fields(i)
+        for k in range(3 + 2 * n, 3 + 4 * n, 2):
+            lo, hi = float.fromhex(f[k]), float.fromhex(f[k + 1])
+            f[k], f[k + 1] = hx(lo + 0.1 * (hi - lo)), hx(hi - 0.1 * (hi - lo))
+        c.set(i, f)
+    return c.text()
+
+
+def edit(c, i, new):
+    c.lines[i] = new
+    return c.text()
+
+
+def mutations_real(base):
+    """(name, function of a fresh Cert, expected exit code) on a PRRP certificate."""
+    return [
+        ("hash_mismatch", lambda c: hash_digit(c), 1),
+        ("model_constant_changed", lambda c: model_changed(c, False), 1),
+        ("model_constant_changed_rehashed", lambda c: model_changed(c, True), 1),
+        ("model_unparsable_rehashed", model_unparsable, 2),
+        ("wrong_version", lambda c: edit(c, 0, "aspects-certificate 2"), 2),
+        ("truncated_mid_record", lambda c: c.text()[: len(c.text()) // 2], 2),
+        ("truncated_at_record", lambda c: "".join(l + "\n" for l in c.lines[:-3]), 2),
+        ("garbage_bytes", lambda c: c.text().replace("\nS ", "\nS \x00\xff", 1), 2),
+        ("content_after_end", lambda c: c.text() + "end 0\n", 2),
+        ("crlf", lambda c: c.text().replace("\n", "\r\n", 1), 2),
+        ("decimal_real", lambda c: replace_first(c, "B", lambda f: f.__setitem__(2, "0.0")), 2),
+        ("extra_space", lambda c: replace_first(c, "S", lambda f: f.__setitem__(1, " " + f[1])), 2),
+        ("end_count_wrong", lambda c: claim_end(c), 2),
+        ("unknown_record_type", lambda c: replace_first(c, "B", lambda f: f.__setitem__(0, "Y")), 2),
+        ("precision_out_of_range", lambda c: edit(c, c.body, "precision 8"), 2),
+        ("record_dropped_link", lambda c: drop(c, c.find("K")[0]), 2),
+        ("record_duplicated_link", lambda c: dup(c, c.find("K")[0]), 1),
+        ("records_reordered_links", lambda c: swap(c, c.find("K")[0]), 1),
+        ("record_dropped_tree", lambda c: drop(c, c.find("U")[0]), 1),
+        ("record_duplicated_tree", lambda c: dup(c, c.find("S")[0]), 1),
+        ("records_reordered_tree", lambda c: swap(c, c.find("S")[0] - 1), 1),
+        ("solution_widened_across_singularity", widen_across_singularity, 1),
+        ("preconditioner_zero", lambda c: replace_first(c, "S", lambda f: f.__setitem__(7, "0x0p+0")), 1),
+        ("regularity_preconditioner_zero", lambda c: replace_first(c, "S", lambda f: f.__setitem__(8, "0x0p+0")), 1),
+        ("coverage_violated", lambda c: replace_first(c, "S", lambda f: f.__setitem__(3, f[5])), 1),
+        ("link_between_aspects", link_other_aspect, 1),
+        ("link_witness_outside", lambda c: replace_first(c, "K", lambda f: f.__setitem__(4, hx(3.0))), 1),
+        ("link_shift_on_nonperiodic", lambda c: replace_first(c, "K", lambda f: f.__setitem__(3, "+0")), 1),
+        ("component_without_links", merge_components, 1),
+        ("box_in_two_components", box_twice, 1),
+        ("inflated_lower_bound", lambda c: claim(c, "lower-bound", 1), 1),
+        ("wrong_filtered", lambda c: claim(c, "filtered", -1), 1),
+        ("wrong_sign", sign_flip, 1),
+        ("contraction_slab_holds_solution", slab_holds_solution, 1),
+        ("discarded_cell_holds_solution", s_to_discard, 1),
+        ("bisection_point_outside", lambda c: replace_first(c, "B", lambda f: f.__setitem__(2, hx(16.0))), 1),
+        ("domain_narrowed", lambda c: replace_first(c, "domain", lambda f: f.__setitem__(1, hx(-1.5))), 1),
+        ("factor_user_out_of_range", lambda c: edit(c, c.find("factor")[0], "factor user 1"), 1),
+        ("output_id_out_of_order", lambda c: replace_first(c, "S", lambda f: f.__setitem__(1, str(int(f[1]) + 1))), 1),
+        ("hint_preconditioner_perturbed", lambda c: perturb_hints(c, 1e-9, 0), 0),
+        ("claim_images_narrowed", narrow_images, 1),
+    ]
+
+
+def claim_end(c):
+    c.lines[-1] = "end %d" % (len(c.lines) + 5)
+    return c.text()
+
+
+def drop(c, i):
+    del c.lines[i]
+    return c.text()
+
+
+def dup(c, i):
+    c.lines.insert(i, c.lines[i])
+    return c.text()
+
+
+def swap(c, i):
+    c.lines[i], c.lines[i + 1] = c.lines[i + 1], c.lines[i]
+    return c.text()
+
+
+def mutations_golden():
+    """(base file, name, function, expected) on the hand-made corpus."""
+    return [
+        ("line_split", "iterate_not_inside_inflated_box",
+         lambda c: replace_first(c, "S", lambda f: f.__setitem__(3, hx(0.0))), 1),
+        ("sine", "link_across_seam_without_shift",
+         lambda c: replace_first_where(c, "K", lambda f: "-" in f[3] or "+" in f[3],
+                                       lambda f: f.__setitem__(3, "00")), 1),
+        ("sine", "hint_preconditioner_and_box_perturbed", lambda c: perturb_hints(c, 1e-9, 1e-9), 0),
+        ("circle", "hint_preconditioner_and_box_perturbed", lambda c: perturb_hints(c, 1e-9, 1e-9), 0),
+        ("circle", "claim_images_narrowed", narrow_images, 1),
+        ("line_split", "discard_record_dropped", lambda c: drop(c, c.find("X")[0]), 1),
+        ("line_split", "link_witness_not_a_double_point_of_both",
+         lambda c: replace_first(c, "K", lambda f: f.__setitem__(4, hx(0.25))), 1),
+    ]
+
+
+def replace_first_where(c, kind, pred, fn):
+    i = next(i for i in c.find(kind) if pred(c.fields(i)))
+    f = c.fields(i)
+    fn(f)
+    c.set(i, f)
+    return c.text()
+
+
+def run(check, path):
+    r = subprocess.run([check, "--quiet", path], stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    return r.returncode, r.stdout.decode(errors="replace").strip()
+
+
+def main():
+    check, tests, work = sys.argv[1], sys.argv[2], sys.argv[3]
+    os.makedirs(work, exist_ok=True)
+    if len(sys.argv) > 5:  # the real thing: a PRRP certificate written by the solver
+        aspects, robots = sys.argv[4], sys.argv[5]
+        subprocess.run([aspects, "solve", os.path.join(robots, "prrp.robot"), "--eps", "0.1",
+                        "--out", os.path.join(work, "prrp"), "--quiet"], check=True)
+        base_path, tag = os.path.join(work, "prrp", "aspects.cert"), "prrp"
+    else:
+        base_path, tag = os.path.join(tests, "valid", "circle.cert"), "circle"
+    code, msg = run(check, base_path)
+    if code != 0:
+        print("FAIL base certificate %s not verified: %s" % (base_path, msg))
+        return 1
+    base = open(base_path).read()
+    cases = [("%s/%s" % (tag, name), base, fn, want) for name, fn, want in mutations_real(base)]
+    for file, name, fn, want in mutations_golden():
+        cases.append(("%s/%s" % (file, name), open(os.path.join(tests, "valid", file + ".cert")).read(), fn, want))
+    failed = 0
+    for name, b, fn, want in cases:
+        try:
+            text = fn(Cert(b))
+        except Exception as e:  # a mutation that does not apply is a failure of the suite
+            print("FAIL %-55s mutation not applicable: %r" % (name, e))
+            failed += 1
+            continue
+        if text == b:
+            print("FAIL %-55s mutation changed nothing" % name)
+            failed += 1
+            continue
+        path = os.path.join(work, name.replace("/", "__") + ".cert")
+        with open(path, "w", newline="") as f:
+            f.write(text)
+        code, msg = run(check, path)
+        ok = code == want
+        print("%s %-55s exit %d (want %d): %s" % ("ok  " if ok else "FAIL", name, code, want, msg[:110]))
+        failed += not ok
+    print("%d mutations, %d failed (base: %s)" % (len(cases), failed, base_path))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
