@@ -118,8 +118,24 @@ class AspectsSearch : public BranchAndPruneSteps {
       // parser), and the box then stands for its values modulo 2π.
       if (!m_.vars[v].periodic && !domain_[v].contains(ex.image[j])) return false;
     }
+    // The reported commands: the image widened by a small margin (still inside [q̃] and
+    // the domain), so that a checker whose enclosure of the image differs in the last
+    // bits (another evaluation order, a perturbed preconditioner) still finds it inside.
     reported_ = cell;
-    for (int j = 0; j < n_; ++j) reported_[m_.command[j]] = ex.image[j];
+    for (int j = 0; j < n_; ++j) {
+      int v = m_.command[j];
+      const Interval& q = ex.inflated[j];
+      double margin = 1e-7 * (q.hi_up() - q.lo_down());
+      double lo = std::max(q.lo_down(), ex.image[j].lo_down() - margin);
+      double hi = std::min(q.hi_up(), ex.image[j].hi_up() + margin);
+      if (!m_.vars[v].periodic) {
+        lo = std::max(lo, domain_[v].lo_down());
+        hi = std::min(hi, domain_[v].hi_up());
+      }
+      ex.image[j].set_hull(lo, hi);
+      round_out_to_doubles(ex.image[j]);
+      reported_[v] = ex.image[j];
+    }
     last_kind_ = UndecidedKind::Singular;
     if (ev_.jacobian_x(reported_, J_) != EvalStatus::Defined ||
         !strongly_regular(J_, &proof_.cx))
@@ -173,6 +189,16 @@ class AspectsSearch : public BranchAndPruneSteps {
     return true;
   }
 
+  // A sign is claimed only when the enclosure clears 0 by a margin, so that another
+  // sound enclosure (the checker's) can confirm it.
+  static int sign_with_margin(const Interval& d) {
+    double lo = d.lo_down(), hi = d.hi_up();
+    double margin = 1e-9 * (hi - lo) + 1e-300;
+    if (lo > margin) return 1;
+    if (hi < -margin) return -1;
+    return 0;
+  }
+
   const int8_t* last_signs() const {
     return out_.signs.data() + out_.signs.size() - out_.factors.size();
   }
@@ -192,7 +218,7 @@ class AspectsSearch : public BranchAndPruneSteps {
     out_.boxes.get(index, exact);
     EvalStatus s = ev_.nodes(factor_prog_, exact);
     for (int f : factor_nodes_)
-      out_.signs.push_back(s == EvalStatus::Defined ? int8_t(certain_sign(ev_.value(f))) : 0);
+      out_.signs.push_back(s == EvalStatus::Defined ? int8_t(sign_with_margin(ev_.value(f))) : 0);
     return index;
   }
 
