@@ -172,6 +172,8 @@ struct ConstrainedCase {
   int (*ok)(const double*);
 };
 
+void PrintTo(const ConstrainedCase& c, std::ostream* os) { *os << c.file; }
+
 class InnerTest : public ::testing::TestWithParam<ConstrainedCase> {};
 
 }  // namespace

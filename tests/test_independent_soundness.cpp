@@ -93,6 +93,8 @@ struct Case {
   int max_links;
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.file << " eps " << c.eps; }
+
 class IndependentSoundness : public ::testing::TestWithParam<Case> {};
 
 TEST_P(IndependentSoundness, ClaimsHoldAtSampledPoints) {
