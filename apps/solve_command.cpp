@@ -101,6 +101,7 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
                 {"filtered", r.filtered},
                 {"filtered_boxes", kept_boxes},
                 {"separated_lower_bound", r.separation.lower_bound},
+                {"separated_representatives", r.separation.representatives},
                 {"sizes", r.csnc_sizes}};
   nlohmann::json f = nlohmann::json::array();
   for (const auto& x : r.factors) f.push_back({{"expression", x.text}, {"origin", x.origin}});

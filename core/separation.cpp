@@ -1,17 +1,19 @@
 #include "separation.h"
 
+#include <algorithm>
 #include <boost/pending/disjoint_sets.hpp>
 
 namespace aspects {
 
 SeparationResult separate_by_signs(int boxes, int p, const std::vector<int8_t>& signs,
                                    const std::vector<uint8_t>& certified,
-                                   const std::vector<NeighborPair>& M) {
+                                   const std::vector<NeighborPair>& M,
+                                   const std::vector<int32_t>* csnc) {
   SeparationResult out;
   const int classes = 1 << p;
   out.per_class.assign(classes, 0);
   std::vector<int> rank(boxes), parent(boxes);
-  std::vector<uint8_t> counted(boxes);
+  std::vector<int32_t> counted(boxes);  // per root: 0, or 1 + index in representatives
   std::vector<uint8_t> in_class(boxes);
   for (int s = 0; s < classes; ++s) {
     auto compatible = [&](int b) {
@@ -38,12 +40,17 @@ SeparationResult separate_by_signs(int boxes, int p, const std::vector<int8_t>& 
       if (!in_class[b] || !certified[b] || !exact(b)) continue;
       int root = ds.find_set(b);
       if (!counted[root]) {
-        counted[root] = 1;
+        out.representatives.push_back(-1);
+        counted[root] = int32_t(out.representatives.size());
         ++out.per_class[s];
       }
+      // CSNCs are numbered by decreasing size: the smallest index is the largest.
+      int32_t& rep = out.representatives[counted[root] - 1];
+      if (csnc && (*csnc)[b] >= 0 && (rep < 0 || (*csnc)[b] < rep)) rep = (*csnc)[b];
     }
     out.lower_bound += out.per_class[s];
   }
+  std::sort(out.representatives.begin(), out.representatives.end());
   return out;
 }
 

@@ -17,11 +17,16 @@ namespace aspects {
 struct SeparationResult {
   int lower_bound = 0;
   std::vector<int> per_class;  // counted components per sign vector (bit i set: s_i = +1)
+  // For each counted component, the largest CSNC among its certified boxes of that sign
+  // class (when CSNCs are given): CSNCs certified to lie in pairwise distinct aspects.
+  std::vector<int32_t> representatives;
 };
 
 // signs: p entries per box (−1, 0 = may vanish, +1); certified: 1 for solution boxes.
+// csnc (optional): component of each box by decreasing size (-1 for none).
 SeparationResult separate_by_signs(int boxes, int p, const std::vector<int8_t>& signs,
                                    const std::vector<uint8_t>& certified,
-                                   const std::vector<NeighborPair>& M);
+                                   const std::vector<NeighborPair>& M,
+                                   const std::vector<int32_t>* csnc = nullptr);
 
 }  // namespace aspects

@@ -412,7 +412,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
 
   // 4.4.2: separation by factor signs; the certified lower bound (11).
   out.separation = separate_by_signs(out.boxes.size(), int(out.factors.size()), out.signs,
-                                     out.certified, out.neighbors);
+                                     out.certified, out.neighbors, &out.csnc);
   lap("components and separation");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

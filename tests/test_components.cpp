@@ -56,3 +56,15 @@ TEST(Separation, UndecidedBoxesJoinComponentsOfBothClasses) {
   std::vector<NeighborPair> M = {{0, 1, 0}, {1, 2, 0}};
   EXPECT_EQ(separate_by_signs(3, 1, signs, cert, M).lower_bound, 1);
 }
+
+TEST(Separation, RepresentativesAreTheLargestCsncOfEachCountedComponent) {
+  // + class: boxes 0,1 (CSNC 0) and 2 (CSNC 2) joined through the undecided box 3;
+  // − class: box 4 (CSNC 1) alone.
+  std::vector<int8_t> signs = {1, 1, 1, 0, -1};
+  std::vector<uint8_t> cert = {1, 1, 1, 0, 1};
+  std::vector<int32_t> csnc = {0, 0, 2, -1, 1};
+  std::vector<NeighborPair> M = {{0, 1, 0}, {1, 3, 0}, {2, 3, 0}, {3, 4, 0}};
+  SeparationResult s = separate_by_signs(5, 1, signs, cert, M, &csnc);
+  EXPECT_EQ(s.lower_bound, 2);
+  EXPECT_EQ(s.representatives, (std::vector<int32_t>{0, 1}));  // CSNC 2 shares with 0
+}
