@@ -25,7 +25,8 @@ if(TARGET aspects)
                    $<TARGET_FILE:aspects> solve ${ASPECTS_TEST_ROBOTS_DIR}/rprpr.robot --progress --quiet)
   aspects_cli_test(solve_default_robot 0 "robot RRRRR" "CSNCs: [0-9]+, filtered: [0-9]+"
                    "lower bound on the number of aspects: [0-9]+" "time: " --
-                   $<TARGET_FILE:aspects> solve --eps 0.5 --no-cert)
+                   $<TARGET_FILE:aspects> solve --eps 1 --no-cert)
+  set_tests_properties(cli.solve_default_robot PROPERTIES TIMEOUT 300)
   aspects_cli_test(solve_bad_threads 2 "--threads" -- $<TARGET_FILE:aspects> solve --threads -1)
   aspects_cli_test(solve_bad_bisect 2 "--bisect" -- $<TARGET_FILE:aspects> solve --bisect middle)
 endif()
