@@ -44,9 +44,13 @@ class AspectsSearch : public BranchAndPruneSteps {
     for (int v = 0; v < nv_; ++v) {
       double clo = cell_[v].lo_down(), chi = cell_[v].hi_up();
       double lo = box[v].lo_down(), hi = box[v].hi_up();
-      double gap = 1e-9 * (chi - clo);
+      // Relative to the cell and to the magnitude of the bound: where the contraction
+      // is tight to rounding level (a solution within ulps of it), a gap of a few ulps
+      // would leave slabs no independent evaluation can refute.
+      double gap = 1e-9 * (chi - clo) + std::ldexp(1.0, -40) * std::max(1.0, std::fabs(lo));
+      double gap_hi = 1e-9 * (chi - clo) + std::ldexp(1.0, -40) * std::max(1.0, std::fabs(hi));
       lo = lo - gap <= clo ? clo : std::nextafter(lo - gap, -INFINITY);
-      hi = hi + gap >= chi ? chi : std::nextafter(hi + gap, INFINITY);
+      hi = hi + gap_hi >= chi ? chi : std::nextafter(hi + gap_hi, INFINITY);
       box[v].set_hull(lo, hi);
       if ((lo > clo || hi < chi) && sink_) sink_->contraction(v, lo, hi);
     }
