@@ -80,7 +80,9 @@ TEST_P(Differential, EnclosuresOverlapOnRandomBoxes) {
 
 INSTANTIATE_TEST_SUITE_P(Robots, Differential,
                          ::testing::Values("prrp.robot", "rprpr.robot", "rrrrr.robot",
-                                           "3rpr.robot", "3rrr_star.robot"),
+                                           "3rpr.robot", "3rrr_star.robot",
+                                           "rrrrr_collisions.robot", "rrrrr_joint_limit.robot",
+                                           "rrrrr_obstacle.robot"),
                          [](const auto& info) {
                            std::string s = info.param;
                            return s.substr(0, s.find('.'));

@@ -31,9 +31,7 @@ std::string sha256_hex(const std::string& bytes) {
   return s;
 }
 
-LineReader::LineReader(const std::string& path) {
-  f_ = std::fopen(path.c_str(), "rb");
-  if (!f_) malformed(0, "cannot open " + path);
+LineReader::LineReader(FILE* f) : f_(f) {
   md_ = EVP_MD_CTX_new();
   EVP_DigestInit_ex(md_, EVP_sha256(), nullptr);
 }

@@ -29,7 +29,7 @@ std::string sha256_hex(const std::string& bytes);
 
 class LineReader {
  public:
-  explicit LineReader(const std::string& path);  // throws CertError (record 0) if unreadable
+  explicit LineReader(FILE* f);  // takes ownership of f
   ~LineReader();
   // Reads the next record and splits it into fields; checks the lexical rules.
   const std::vector<std::string_view>& next();
@@ -49,6 +49,10 @@ class LineReader {
   long line_ = 0;
   std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
 };
+
+// The whole check (main.cpp): reads a certificate from f (closed on return) and returns the
+// exit code (0 verified, 1 rejected, 2 malformed) with the verdict line in `result`.
+int check_certificate(FILE* f, bool quiet, std::string& result);
 
 // Field parsers; `rec` is the record number used in error messages.
 int64_t parse_int(std::string_view s, long rec);

@@ -22,6 +22,7 @@ Evaluator::Evaluator(const Model& m) : m_(m) {
   der_.resize(N * m.vars.size());
   for (auto& d : der_) mpfi_set_si(d, 0);  // entries of variables a node does not mention stay 0
   cstat_.assign(N, 0);
+  st_.assign(N, 0);
   tc_.resize(N);
   mpfi_const_pi(pi_);
   mpfi_mul_2ui(two_pi, pi_, 1);
@@ -34,6 +35,7 @@ Evaluator::Evaluator(const Model& m) : m_(m) {
                                                   n.b >= 0 ? &cval_[n.b] : nullptr));
   }
   all_eqs = closure(m.eqs);
+  all_atoms = closure(m.atoms);
   for (int e : m.eqs) eq_prog.push_back(closure({e}));
   for (int f : m.factors) factor_prog.push_back(closure({f}));
 }
@@ -196,17 +198,43 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
   return st == 0 && !r.bounded() ? 1 : st;
 }
 
+// A node's status is the worst of its children's and its own; undefined children make it
+// undefined (its value is then meaningless). Proof mode stops at 1, Refute mode at 2, Truth
+// mode evaluates every node.
 bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
   for (int id : prog) {
     const Node& n = m_.nodes[id];
     Ival& r = val_[id];
-    int st;
+    int& st = st_[id];
     if (!n.dep) mpfi_set(r, cval_[id]), st = cstat_[id];
     else if (n.op == Op::Var) mpfi_set(r, box[n.k]), st = r.empty() ? 2 : r.bounded() ? 0 : 1;
-    else st = apply(id, r, n.a >= 0 ? &val_[n.a] : nullptr, n.b >= 0 ? &val_[n.b] : nullptr);
-    if (st == 2 || (st == 1 && mode == Mode::Proof)) return false;
+    else if ((st = std::max(st_[n.a], n.b >= 0 ? st_[n.b] : 0)) < 2)
+      st = std::max(st, apply(id, r, &val_[n.a], n.b >= 0 ? &val_[n.b] : nullptr));
+    if (mode != Mode::Truth && (st == 2 || (st == 1 && mode == Mode::Proof))) return false;
   }
   return true;
+}
+
+// An atom g >= 0 (> 0) is True when g is defined on the whole box with lo >= 0 (> 0), False
+// when hi < 0 (<= 0) or g is defined nowhere; And/Or are min/max in False < Unknown < True.
+int Evaluator::truth(int f) const {
+  const Formula& F = m_.formulas[f];
+  if (F.kind == Formula::Atom) {
+    const Ival& g = val_[F.expr];
+    if (st_[F.expr] == 2 || g.empty() || mpfr_sgn(g.R()) < int(F.strict)) return 0;
+    return st_[F.expr] == 0 && mpfr_sgn(g.L()) >= int(F.strict) ? 2 : 1;
+  }
+  int t = F.kind == Formula::And ? 2 : 0;
+  for (int k : F.kids) t = F.kind == Formula::And ? std::min(t, truth(k)) : std::max(t, truth(k));
+  return t;
+}
+
+int Evaluator::feasible(const Ival* box) {
+  int t = 2;
+  if (m_.constraints.empty()) return t;
+  eval(all_atoms, box, Mode::Truth);
+  for (int c : m_.constraints) t = std::min(t, truth(c));
+  return t;
 }
 
 bool Evaluator::eval_ad(const std::vector<int>& prog, const Ival* box, uint64_t dirs) {

@@ -1,7 +1,7 @@
 // eval.h — interval evaluation of the model's expression DAG in MPFI: natural forward
 // evaluation in two modes (Proof: everything must be defined and finite on the whole box;
 // Refute: partially defined functions are evaluated on the part of the box where they are
-// defined), forward-mode interval automatic differentiation for the Jacobians, and
+// defined), the three-valued truth of the constraints (FORMAT.md, "Constraints"), forward-mode interval automatic differentiation for the Jacobians, and
 // HC4-Revise (forward evaluation, then backward projections that never remove a solution).
 #pragma once
 
@@ -12,7 +12,7 @@
 
 namespace cc {
 
-enum class Mode { Proof, Refute };
+enum class Mode { Proof, Refute, Truth };
 
 class Evaluator {
  public:
@@ -22,8 +22,10 @@ class Evaluator {
 
   // Values of the nodes of `prog` on `box` (one interval per variable). Proof: true iff
   // every node is defined and finite on the whole box. Refute: false only when some node
-  // is defined nowhere on the box (then no point of the box is a solution).
+  // is defined nowhere on the box (then no point of the box is a solution). Truth: never.
   bool eval(const std::vector<int>& prog, const Ival* box, Mode mode);
+  // Kleene truth of the conjunction of every constraint on box: 0 False, 1 Unknown, 2 True.
+  int feasible(const Ival* box);
   // Proof-mode values and derivatives w.r.t. the variables whose bit is set in `dirs`.
   bool eval_ad(const std::vector<int>& prog, const Ival* box, uint64_t dirs);
   const Ival& val(int id) const { return val_[id]; }
@@ -34,12 +36,13 @@ class Evaluator {
   bool constant(int id, Ival& out) const;
 
   std::vector<int> closure(const std::vector<int>& roots) const;
-  std::vector<int> all_eqs;                      // program of every equation
+  std::vector<int> all_eqs, all_atoms;           // program of every equation, of every atom
   std::vector<std::vector<int>> eq_prog, factor_prog;
   Ival two_pi;
 
  private:
   int apply(int id, Ival& r, const Ival* a, const Ival* b);
+  int truth(int formula) const;
   void trig(bool cosine, int child, const Ival& a, Ival& r);
   void power(Ival& r, const Ival& a, int k);
   bool derive(int id);
@@ -51,7 +54,8 @@ class Evaluator {
 
   const Model& m_;
   std::vector<Ival> val_, der_, cval_;
-  std::vector<int> cstat_;  // constant nodes: 0 defined, 1 partial/unbounded, 2 undefined
+  // Per node: 0 defined (and finite) on the whole box, 1 partial or unbounded, 2 nowhere.
+  std::vector<int> cstat_, st_;  // constant nodes (once), every node (last evaluation)
   // One-entry cache of sin and cos per argument node: MPFR trigonometry is the costly
   // part, and sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit it.
   struct TrigCache {

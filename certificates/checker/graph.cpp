@@ -1,10 +1,11 @@
 // graph.cpp — union-find (path halving), the neighbourhood graph by sort-and-sweep (not
-// O(N²): items are the boxes and their useful 2π-shifted copies, sorted on the dimension
-// where boxes are thinnest relative to their spread; only pairs overlapping there are
-// tested), the sign-separated lower bound and the filtering rule.
+// O(N²), and not 3^(periodic variables) copies: only the sweep dimension is shifted, the
+// other variables are tested shift by shift), the sign-separated lower bound and the
+// filtering rule.
 #include "graph.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 namespace cc {
@@ -29,81 +30,73 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
   const int nv = R.nv;
   const size_t N = R.size();
   std::vector<std::pair<int, int>> out;
-  if (N == 0) return out;
-  std::vector<int> pv;
-  for (int v = 0; v < nv; ++v)
-    if (periodic[v]) pv.push_back(v);
+  // S[(b·nv + v)·3 + k + 1]: b_v + 2πk with its ends rounded outward (k = 0 if v is not
+  // periodic); the hull and mean width of the boxes per variable.
+  std::vector<std::array<double, 2>> S(N * nv * 3);
   std::vector<double> hlo(nv, 1e308), hhi(nv, -1e308), mean(nv, 0);
+  Ival t;
   for (size_t b = 0; b < N; ++b)
     for (int v = 0; v < nv; ++v) {
-      hlo[v] = std::min(hlo[v], R.box(b)[2 * v]);
-      hhi[v] = std::max(hhi[v], R.box(b)[2 * v + 1]);
-      mean[v] += (R.box(b)[2 * v + 1] - R.box(b)[2 * v]) / double(N);
-    }
-  Ival shift[3], t;
-  for (int k = -1; k <= 1; ++k) mpfi_mul_si(shift[k + 1], two_pi, k);
-  // Items: every box unshifted, and each copy b + 2πk (bounds rounded outward) that can
-  // still meet some unshifted box.
-  struct Item {
-    int id;
-    bool shifted;
-  };
-  std::vector<Item> items;
-  std::vector<double> ib, tmp(2 * nv);
-  int combos = 1;
-  for (size_t i = 0; i < pv.size(); ++i) combos *= 3;
-  for (size_t b = 0; b < N; ++b)
-    for (int c = 0; c < combos; ++c) {
-      std::copy(R.box(b), R.box(b) + 2 * nv, tmp.begin());
-      bool useful = true;
-      int code = c;
-      for (int v : pv) {
-        int k = code % 3 - 1;
-        code /= 3;
-        if (k == 0) continue;
-        mpfi_add_d(t, shift[k + 1], tmp[2 * v]);
-        tmp[2 * v] = t.lo();
-        mpfi_add_d(t, shift[k + 1], tmp[2 * v + 1]);
-        tmp[2 * v + 1] = t.hi();
-        if (tmp[2 * v + 1] < hlo[v] || tmp[2 * v] > hhi[v]) useful = false;
+      const double lo = R.box(b)[2 * v], hi = R.box(b)[2 * v + 1];
+      hlo[v] = std::min(hlo[v], lo), hhi[v] = std::max(hhi[v], hi), mean[v] += (hi - lo) / double(N);
+      for (int k = -1; k <= 1; ++k) {
+        std::array<double, 2>& s = S[(b * nv + v) * 3 + k + 1];
+        s = {lo, hi};
+        if (!k || !periodic[v]) continue;
+        mpfi_mul_si(t, two_pi, k), mpfi_add_d(t, t, lo), s[0] = t.lo();
+        mpfi_mul_si(t, two_pi, k), mpfi_add_d(t, t, hi), s[1] = t.hi();
       }
-      if (!useful) continue;
-      items.push_back({int(b), c != (combos - 1) / 2});  // code (combos-1)/2 is k = 0
-      ib.insert(ib.end(), tmp.begin(), tmp.end());
     }
+  // Sweep on the dimension d where boxes are thinnest relative to their spread: items are
+  // the boxes and, if d is periodic, their copies shifted in d that can meet the hull.
   int d = 0;
   double best = -1;
-  for (int v = 0; v < nv; ++v) {
-    double score = (hhi[v] - hlo[v]) / (mean[v] + 1e-300);
-    if (score > best) best = score, d = v;
-  }
-  std::vector<size_t> order(items.size());
-  std::iota(order.begin(), order.end(), 0);
-  auto box = [&](size_t i) { return &ib[i * 2 * nv]; };
-  std::sort(order.begin(), order.end(), [&](size_t x, size_t y) { return box(x)[2 * d] < box(y)[2 * d]; });
-  for (size_t i = 0; i < order.size(); ++i) {
-    const Item& p = items[order[i]];
-    const double* a = box(order[i]);
-    for (size_t j = i + 1; j < order.size(); ++j) {
-      const Item& q = items[order[j]];
-      const double* b = box(order[j]);
-      if (b[2 * d] > a[2 * d + 1]) break;  // sorted on lo_d: no later item meets a in d
-      if (p.id == q.id || (p.shifted && q.shifted)) continue;
+  for (int v = 0; v < nv; ++v)
+    if ((hhi[v] - hlo[v]) / (mean[v] + 1e-300) > best) best = (hhi[v] - hlo[v]) / (mean[v] + 1e-300), d = v;
+  struct Item {
+    double lo, hi;
+    int id, k;
+  };
+  std::vector<Item> items;
+  for (size_t b = 0; b < N; ++b)
+    for (int k = periodic[d] ? -1 : 0; k <= (periodic[d] ? 1 : 0); ++k) {
+      const std::array<double, 2>& s = S[(b * nv + d) * 3 + k + 1];
+      if (!k || (s[1] >= hlo[d] && s[0] <= hhi[d])) items.push_back({s[0], s[1], int(b), k});
+    }
+  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) { return x.lo < y.lo; });
+  for (size_t i = 0; i < items.size(); ++i)
+    for (size_t j = i + 1; j < items.size() && items[j].lo <= items[i].hi; ++j) {
+      const Item &p = items[i], &q = items[j];
+      if (p.id == q.id || (p.k && q.k)) continue;
+      // Every other variable v: p_v meets q_v + 2πk for some k (independently per variable).
       bool meet = true;
-      for (int v = 0; v < nv && meet; ++v) meet = a[2 * v] <= b[2 * v + 1] && b[2 * v] <= a[2 * v + 1];
+      for (int v = 0; v < nv && meet; ++v) {
+        const double* a = R.box(p.id) + 2 * v;
+        meet = v == d;
+        for (int k = 0; k < 3 && !meet; ++k) {
+          const std::array<double, 2>& s = S[(size_t(q.id) * nv + v) * 3 + k];
+          meet = a[0] <= s[1] && s[0] <= a[1];
+        }
+      }
       if (meet) out.emplace_back(std::min(p.id, q.id), std::max(p.id, q.id));
     }
-  }
   return out;
 }
 
 long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M) {
   const size_t N = R.size();
   const uint32_t full = R.p >= 32 ? ~0u : (1u << R.p) - 1;
+  // Only the sign vectors s of solution boxes with every sign verified can count (bit i of
+  // s set: factor i positive): at most N classes instead of 2^p.
+  std::vector<uint32_t> classes;
+  for (size_t b = 0; b < N; ++b)
+    if (R.solution[b] && (R.pos[b] | R.neg[b]) == full) classes.push_back(R.pos[b]);
+  std::sort(classes.begin(), classes.end());
+  classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
   UnionFind uf;
   std::vector<uint8_t> compat(N), counted(N);
   long total = 0;
-  for (uint32_t s = 0; s <= full; ++s) {  // bit i of s set: factor i positive
+  for (uint32_t s : classes) {
     for (size_t b = 0; b < N; ++b) compat[b] = !(R.neg[b] & s) && !(R.pos[b] & ~s & full);
     uf.reset(N);
     for (const auto& e : M)
@@ -114,7 +107,6 @@ long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M) {
       int r = uf.find(int(b));
       if (!counted[r]) counted[r] = 1, ++total;
     }
-    if (s == full) break;
   }
   return total;
 }

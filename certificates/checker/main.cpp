@@ -34,7 +34,7 @@ struct Checker {
   std::string model_sha;
   long solutions = 0, undecided = 0, links = 0;
 
-  explicit Checker(const std::string& path) : rd(path) {}
+  explicit Checker(FILE* f) : rd(f) {}
   long rec() const { return rd.record(); }
   [[noreturn]] void reject(const std::string& why) { rejected(rec(), why); }
   int64_t I(std::string_view s) { return parse_int(s, rec()); }
@@ -73,7 +73,7 @@ struct Checker {
   void store(std::string_view signs, bool jac, const double* box, bool solution);
   void solution_leaf(const Fields& f, const std::vector<double>& cell);
   void link_section(UnionFind& uf);
-  void run(bool quiet);
+  std::string run(bool quiet);
 };
 
 void Checker::header() {
@@ -97,6 +97,10 @@ void Checker::header() {
   mpfr_set_default_prec(mpfr_prec_t(prec));
   try {
     m = parse_model(text);
+    // A limit of the checker, not of the format: the evaluator keeps about nodes·(variables
+    // + 5) intervals of `prec` bits (and MPFR aborts when out of memory).
+    if (double(m.nodes.size()) * double(m.vars.size() + 5) * double(prec / 64 + 2) > double(1 << 22))
+      rejected(model_rec, "the embedded model is too large for the checker at this precision");
     ev.reset(new Evaluator(m));
   } catch (const ModelError& e) {
     malformed(model_rec, std::string("embedded model: ") + e.what());
@@ -202,6 +206,7 @@ void Checker::solution_leaf(const Fields& f, const std::vector<double>& cell) {
   }
   pr->load(B.data());
   if (const char* why = pr->regular(CX.data(), CQ.data())) reject(std::string("P2: ") + why);
+  if (ev->feasible(pr->box.data()) != 2) reject("inner test: a constraint is not True on the box" + show(B));
   store(f[2], true, B.data(), true);
   ++solutions;
 }
@@ -244,8 +249,8 @@ void Checker::tree() {
     } else if (k == "X") {
       count(f, 2);
       std::string_view h = f[1];
-      if (h != "hs" && h != "domain" && !(h.size() > 2 && h.compare(0, 2, "eq") == 0 && I(h.substr(2)) >= 0))
-        malformed(rec(), "bad hint '" + std::string(h) + "'");
+      size_t d = h.compare(0, 2, "eq") == 0 ? 2 : h[0] == 'c';  // hs, eq<i> or c<k>
+      if (h != "hs" && !(d && h.size() > d && I(h.substr(d)) >= 0)) malformed(rec(), "bad hint '" + std::string(h) + "'");
       pr->load(cell.data());
       if (!pr->refute()) reject("cannot refute the discarded cell" + show(cell));
     } else if (k == "U" || k == "S") {
@@ -319,7 +324,7 @@ void Checker::link_section(UnionFind& uf) {
   }
 }
 
-void Checker::run(bool quiet) {
+std::string Checker::run(bool quiet) {
   auto t0 = std::chrono::steady_clock::now();
   header();
   tree();
@@ -359,17 +364,34 @@ void Checker::run(bool quiet) {
   long bound = lower_bound(R, neighbour_pairs(R, periodic, ev->two_pi));
   if (claim > bound)
     rejected(claim_rec, "claimed lower bound " + std::to_string(claim) + " exceeds the recomputed " + std::to_string(bound));
-  std::printf("check_cert: VERIFIED sha256(cert)=%s sha256(model)=%s robot=%s solutions=%ld undecided=%ld "
-              "links=%ld csncs=%ld lower_bound=%ld%s\n", rd.file_sha256().c_str(), model_sha.c_str(), m.name.c_str(),
-              solutions, undecided, links, long(comps), long(claim), user_factors ? " [factors rest on user input]" : "");
   if (!quiet)
     std::fprintf(stderr, "check_cert: %ld refutations (%ld boxes), recomputed lower bound %ld, %.2f s\n",
                  pr->refutations, pr->refute_boxes, bound,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return "VERIFIED sha256(cert)=" + rd.file_sha256() + " sha256(model)=" + model_sha + " robot=" + m.name +
+         " solutions=" + std::to_string(solutions) + " undecided=" + std::to_string(undecided) + " links=" +
+         std::to_string(links) + " csncs=" + std::to_string(comps) + " lower_bound=" + std::to_string(claim) +
+         (user_factors ? " [factors rest on user input]" : "");
 }
 
 }  // namespace
 
+int cc::check_certificate(FILE* f, bool quiet, std::string& result) {
+  try {
+    result = Checker(f).run(quiet);
+    return 0;
+  } catch (const CertError& e) {
+    result = std::string(e.malformed ? "MALFORMED" : "REJECTED") + " record " + std::to_string(e.record) + ": " + e.what();
+    return e.malformed ? 2 : 1;
+  } catch (const std::bad_alloc&) {
+    result = "REJECTED: out of memory";
+  } catch (const std::exception& e) {
+    result = std::string("REJECTED: internal error: ") + e.what();
+  }
+  return 1;
+}
+
+#ifndef CHECK_CERT_NO_MAIN
 int main(int argc, char** argv) {
   bool quiet = false, usage = argc < 2;
   std::string path;
@@ -389,17 +411,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: check_cert [--quiet] FILE.cert (see --help)\n");
     return 2;
   }
-  try {
-    Checker(path).run(quiet);
-    return 0;
-  } catch (const CertError& e) {
-    std::printf("check_cert: %s record %ld: %s\n", e.malformed ? "MALFORMED" : "REJECTED", e.record, e.what());
-    return e.malformed ? 2 : 1;
-  } catch (const std::bad_alloc&) {
-    std::printf("check_cert: REJECTED: out of memory\n");
-    return 1;
-  } catch (const std::exception& e) {
-    std::printf("check_cert: REJECTED: internal error: %s\n", e.what());
-    return 1;
-  }
+  FILE* f = std::fopen(path.c_str(), "rb");
+  std::string result = "MALFORMED record 0: cannot open " + path;
+  int code = f ? check_certificate(f, quiet, result) : 2;
+  std::printf("check_cert: %s\n", result.c_str());
+  return code;
 }
+#endif

@@ -4,6 +4,8 @@
 //   expr := term (('+'|'-') term)*     term := unary (('*'|'/') unary)*
 //   unary := ('-'|'+') unary | power   power := primary ['^' ['-'] INTEGER]
 //   primary := NUMBER | pi | NAME | FUNC '(' expr ')' | (min|max) '(' expr ',' expr ')' | '(' expr ')'
+//   formula := conj ('or' conj)*       conj := fprim ('and' fprim)*
+//   fprim := '(' formula ')' | expr ('>='|'>'|'<='|'<') expr
 // Besides syntax it enforces what the proofs rely on: a square system, and periodic
 // variables entering only through sin/cos of sums (so f is 2π-periodic in them and the
 // 2π shifts of links and of the neighbourhood graph are sound).
@@ -12,6 +14,7 @@
 #include <cctype>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace cc {
 namespace {
@@ -64,11 +67,13 @@ std::vector<Token> lex(const std::string& s) {
       }
       if (dots > 1) fail(l, co, "malformed number '" + s.substr(b, i - b) + "'");
       out.push_back({Tok::Number, s.substr(b, i - b), l, co});
-    } else if (std::string("+-*/^()[],=").find(c) != std::string::npos) {
+    } else if (std::string("+-*/^()[],=<>").find(c) != std::string::npos) {
       if (c == '(' || c == '[') ++depth;
       if ((c == ')' || c == ']') && depth > 0) --depth;
       adv();
-      out.push_back({Tok::Punct, std::string(1, c), l, co});
+      bool le = (c == '<' || c == '>') && i < s.size() && s[i] == '=';  // <= and >=
+      if (le) adv();
+      out.push_back({Tok::Punct, le ? std::string{c, '='} : std::string(1, c), l, co});
     } else {
       fail(l, co, "unexpected character (byte " + std::to_string((unsigned char)c) + ")");
     }
@@ -83,7 +88,7 @@ const std::map<std::string, Op> kFunctions = {
     {"tan", Op::Tan}, {"exp", Op::Exp},   {"log", Op::Log},   {"abs", Op::Abs},
     {"asin", Op::Asin}, {"acos", Op::Acos}, {"atan", Op::Atan}};
 const std::set<std::string> kReserved = {"robot", "constant", "let", "pose", "command", "equation",
-                                         "constraint", "factor", "in", "periodic", "pi", "min", "max"};
+                                         "constraint", "factor", "in", "periodic", "pi", "min", "max", "and", "or"};
 
 class Parser {
  public:
@@ -106,13 +111,18 @@ class Parser {
  private:
   const Token& peek() const { return t_[p_]; }
   bool punct(const char* s) const { return peek().kind == Tok::Punct && peek().text == s; }
+  bool word(const char* s) const { return peek().kind == Tok::Ident && peek().text == s; }
+  static bool relation(const Token& t) { return t.kind == Tok::Punct && (t.text[0] == '<' || t.text[0] == '>'); }
   [[noreturn]] void bad(const Token& t, const std::string& msg) { fail(t.line, t.col, msg); }
   void expect(const char* s) {
     if (!punct(s)) bad(peek(), std::string("expected '") + s + "', found '" + peek().text + "'");
     ++p_;
   }
 
+  // Structurally equal nodes are shared, as in the solver's DAG: e*e is then a square.
   int add(Op op, int a = -1, int b = -1, int k = 0) {
+    auto memo = memo_.emplace(std::make_tuple(op, a, b, k), int(m_.nodes.size()));
+    if (!memo.second) return memo.first->second;
     Node n{op, a, b, k, 0};
     if (a >= 0) n.dep |= m_.nodes[a].dep;
     if (b >= 0) n.dep |= m_.nodes[b].dep;
@@ -150,14 +160,14 @@ class Parser {
       Var v;
       v.name = new_name();
       v.pose = k == "pose";
-      if (!(peek().kind == Tok::Ident && peek().text == "in")) bad(peek(), "expected 'in'");
+      if (!word("in")) bad(peek(), "expected 'in'");
       ++p_;
       expect("[");
       v.lo = const_expr();
       expect(",");
       v.hi = const_expr();
       expect("]");
-      if (peek().kind == Tok::Ident && peek().text == "periodic") v.periodic = true, ++p_;
+      if (word("periodic")) v.periodic = true, ++p_;
       int index = int(m_.vars.size());
       if (index >= 64) bad(kw, "too many variables");
       m_.vars.push_back(v);
@@ -171,6 +181,8 @@ class Parser {
       int e = add(Op::Sub, lhs, expr());
       if (!m_.nodes[e].dep) bad(at, "equation does not depend on any variable");
       m_.eqs.push_back(e);
+    } else if (k == "constraint") {
+      m_.constraints.push_back(formula(false));
     } else if (k == "factor") {
       Token at = peek();
       int e = expr();
@@ -189,12 +201,50 @@ class Parser {
     if (m_.nodes[e].dep) bad(at, "a domain bound must be a constant expression");
     return e;
   }
+  struct Depth {  // bounded recursion: a hostile model must not overflow the stack
+    Parser& p;
+    int k;
+    explicit Depth(Parser& q, int step = 1) : p(q), k(step) {
+      if ((p.depth_ += k) > 200) p.bad(p.peek(), "expression nested too deeply");
+    }
+    ~Depth() { p.depth_ -= k; }
+  };
+  // A disjunction (conj = false) or conjunction of constraint formulas.
+  int formula(bool conj) {
+    Depth guard(*this, !conj);
+    std::vector<int> kids{conj ? fprim() : formula(true)};
+    while (word(conj ? "and" : "or")) ++p_, kids.push_back(conj ? fprim() : formula(true));
+    if (kids.size() == 1) return kids[0];
+    m_.formulas.push_back({conj ? Formula::And : Formula::Or, false, -1, kids});
+    return int(m_.formulas.size()) - 1;
+  }
+  // A '(' group is a formula iff it holds a comparison, 'and' or 'or' (an expression never
+  // does, so this is the reading the solver's try-formula-then-expression would find).
+  int fprim() {
+    bool group = false;
+    for (size_t i = p_, d = 0; punct("(") && t_[i].kind != Tok::End && !group; ++i) {
+      const Token& t = t_[i];
+      if (t.kind == Tok::Punct && (t.text == "(" || t.text == ")") && (t.text == "(" ? ++d : --d) == 0) break;
+      group = relation(t) || (t.kind == Tok::Ident && (t.text == "and" || t.text == "or"));
+    }
+    if (group) {
+      ++p_;
+      int f = formula(false);
+      expect(")");
+      return f;
+    }
+    Token at = peek();
+    int lhs = expr();
+    if (!relation(peek())) bad(peek(), "expected a comparison ('>=', '>', '<=' or '<'), found '" + peek().text + "'");
+    const std::string rel = t_[p_++].text;
+    int rhs = expr(), g = rel[0] == '>' ? add(Op::Sub, lhs, rhs) : add(Op::Sub, rhs, lhs);
+    if (!m_.nodes[g].dep) bad(at, "comparison does not depend on any variable");
+    m_.atoms.push_back(g);
+    m_.formulas.push_back({Formula::Atom, rel.size() == 1, g, {}});
+    return int(m_.formulas.size()) - 1;
+  }
   int expr() {
-    struct Depth {  // bounded recursion: a hostile model must not overflow the stack
-      int& d;
-      ~Depth() { --d; }
-    } guard{++depth_};
-    if (depth_ > 200) bad(peek(), "expression nested too deeply");
+    Depth guard(*this);
     int a = term();
     while (punct("+") || punct("-")) {
       Op op = t_[p_++].text == "+" ? Op::Add : Op::Sub;
@@ -228,20 +278,19 @@ class Parser {
     if (t.text.size() > 4) bad(t, "exponent too large");
     ++p_;
     int k = std::stoi(t.text) * (neg ? -1 : 1);
-    if (k == 0) {  // x^0 = 1
-      m_.literals.push_back("1");
-      return add(Op::Const, -1, -1, int(m_.literals.size()) - 1);
-    }
+    if (k == 0) return literal("1");  // x^0 = 1
     if (k == 1) return a;
     return k == 2 ? add(Op::Sqr, a) : add(Op::Pow, a, -1, k);
+  }
+  int literal(const std::string& text) {
+    auto l = literal_.emplace(text, int(m_.literals.size()));
+    if (l.second) m_.literals.push_back(text);
+    return add(Op::Const, -1, -1, l.first->second);
   }
   int primary() {
     Token t = peek();
     ++p_;
-    if (t.kind == Tok::Number) {
-      m_.literals.push_back(t.text);
-      return add(Op::Const, -1, -1, int(m_.literals.size()) - 1);
-    }
+    if (t.kind == Tok::Number) return literal(t.text);
     if (t.kind == Tok::Punct && t.text == "(") {
       int a = expr();
       expect(")");
@@ -283,7 +332,7 @@ class Parser {
       if (n.op == Op::Var) bare[id] = n.dep;
       if (n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg) bare[id] = bare[n.a] | (n.b >= 0 ? bare[n.b] : 0);
     }
-    for (auto* roots : {&m_.eqs, &m_.factors})
+    for (auto* roots : {&m_.eqs, &m_.factors, &m_.atoms})
       for (int r : *roots) {
         live[r] = 1;
         if (bare[r] & periodic) fail_periodic(bare[r] & periodic);
@@ -307,7 +356,8 @@ class Parser {
   std::vector<Token> t_;
   size_t p_ = 0;
   Model m_;
-  std::map<std::string, int> names_;
+  std::map<std::string, int> names_, literal_;
+  std::map<std::tuple<Op, int, int, int>, int> memo_;
   std::vector<Token> var_tok_;
   int depth_ = 0;
 };

@@ -1,7 +1,7 @@
 // model.h — the checker's own representation of a robot model: an expression DAG whose
 // children always have smaller ids than their parents (so increasing id order is a forward
 // evaluation order), the variables in declaration order, the equations (lhs - rhs) and the
-// user factors. The parser is purely syntactic: literals are kept as decimal strings and
+// user factors, and the constraint formulas (paper 5.4). The parser is purely syntactic: literals are kept as decimal strings and
 // turned into enclosing MPFI intervals by the evaluator (mpfi_set_str), never via strtod.
 #pragma once
 
@@ -30,6 +30,14 @@ struct Var {
   int lo = -1, hi = -1;  // nodes of the declared bounds (constant expressions)
 };
 
+// A node of a constraint formula: an atom g >= 0 (g > 0 if strict) or the and/or of kids.
+struct Formula {
+  enum Kind : uint8_t { Atom, And, Or } kind = Atom;
+  bool strict = false;
+  int expr = -1;  // Atom: node of g (E1 - E2, or E2 - E1 for <= and <)
+  std::vector<int> kids;
+};
+
 struct Model {
   std::string name;
   std::vector<Node> nodes;
@@ -37,6 +45,8 @@ struct Model {
   std::vector<Var> vars;
   std::vector<int> pose, command;  // variable indices, declaration order
   std::vector<int> eqs, factors;   // root nodes
+  std::vector<Formula> formulas;
+  std::vector<int> constraints, atoms;  // root formula of each constraint; node g of each atom
   int n() const { return int(eqs.size()); }
 };
 

@@ -36,8 +36,10 @@ static bool invert(std::vector<double> M, int n, std::vector<double>& inv) {
   return true;
 }
 
-// Determinant by cofactor expansion along the first row (MPFI throughout).
+// Determinant by cofactor expansion along the first row (MPFI throughout); for n > 6 (n!
+// products) the entire line, so that no sign is proved.
 static void det(const std::vector<Ival>& M, int n, Ival& out) {
+  if (n > 6) return out.entire();
   if (n == 1) {
     mpfi_set(out, M[0]);
     return;
@@ -216,7 +218,8 @@ int Prover::hs_contract(std::vector<Ival>& b) {
 }
 
 // HC4 over all equations until no variable shrinks by more than 1%, then a
-// Hansen–Sengupta contraction; repeated while either makes progress.
+// Hansen–Sengupta contraction; repeated while either makes progress. False: b holds no
+// feasible solution.
 bool Prover::contract(std::vector<Ival>& b) {
   std::vector<double> w(nv_), w2(nv_);
   auto widths = [&](std::vector<double>& out) {
@@ -227,10 +230,12 @@ bool Prover::contract(std::vector<Ival>& b) {
       if (w2[v] < 0.99 * w[v]) return true;
     return false;
   };
-  // Cheapest test first: a natural evaluation of each equation excluding 0.
+  // Cheapest tests first: a natural evaluation of each equation excluding 0, a constraint
+  // False on the box.
   if (!ev_.eval(ev_.all_eqs, b.data(), Mode::Refute)) return false;
   for (int e : m_.eqs)
     if (ev_.val(e).sign()) return false;
+  if (ev_.feasible(b.data()) == 0) return false;
   widths(w);
   for (int round = 0; round < 50; ++round) {
     for (int i = 0; i < n_; ++i)
@@ -243,7 +248,7 @@ bool Prover::contract(std::vector<Ival>& b) {
     }
     w = w2;
   }
-  return true;
+  return ev_.feasible(b.data()) != 0;
 }
 
 bool Prover::refute_rec(std::vector<Ival>& b, int depth, int& budget) {

@@ -1,8 +1,8 @@
 // proofs.h — the checker's proofs on one box: the parametric Hansen–Sengupta test of
 // P1/P3 with a recorded preconditioner and inflated box, strong regularity of C·Fx and
 // C·Fq (P2), enclosures of the sign factors, and the refutation procedure for contraction
-// slabs and discarded cells (HC4 fixpoint, Hansen–Sengupta contraction with the checker's
-// own preconditioner, bisection). Boxes arrive as doubles, interleaved lo/hi per variable.
+// slabs and discarded cells (HC4 fixpoint, false constraints, Hansen–Sengupta contraction
+// with the checker's own preconditioner, bisection). Boxes arrive as doubles, lo/hi pairs.
 #pragma once
 
 #include <string>
@@ -32,7 +32,7 @@ class Prover {
   // Enclosure of a factor on `box`; false if not defined there. `jac` says whether the
   // Jacobians of `box` are already computed (by regular()).
   bool factor(const Factor& f, bool jac, Ival& out);
-  // True when `box` provably holds no solution of f = 0.
+  // True when `box` provably holds no feasible solution of f = 0.
   bool refute();
   long refutations = 0, refute_boxes = 0;
 

@@ -118,6 +118,14 @@ MODELS = {
         text="robot LINE\npose x in [0, 1]\ncommand q in [0, 1]\nequation x - q = 0\n",
         domain=[(0.0, 1.0), (0.0, 1.0)], periodic=[False, False],
         f=lambda x, q: x - q, fx=lambda x, q: I(1.0), fq=lambda x, q: I(-1.0)),
+    # Constraints (FORMAT.md, "Constraints"): the feasible solutions are 1/4 < x <= 7/8. The
+    # first constraint exercises and/or, both readings of a parenthesised group and a
+    # statement continued over a newline inside parentheses.
+    "line_c": dict(
+        text=("robot LINE-C\npose x in [0, 1]\ncommand q in [0, 1]\nequation x - q = 0\n"
+              "constraint ((q + 1) > 1.25 and x >= 0.25) or (x < -1 or\n  q <= -1)\n"
+              "constraint x <= 0.875\n"),
+        domain=[(0.0, 1.0), (0.0, 1.0)], periodic=[False, False]),
     "circle": dict(
         text=("# PRRP-like circle: (x - a)^2 + (q - b)^2 = l^2\nrobot PRRP\nconstant a = 0\n"
               "constant b = 0\nconstant l = 1\npose    x in [-2, 2]\ncommand q in [-2, 2]\n"
@@ -354,11 +362,55 @@ def line_certs():
     return {"line_single": finish(single), "line_split": finish(split), "line_undecided": finish(undecided)}
 
 
+def constrained_certs():
+    """LINE-C written record by record: a discard and a slab refuted by a constraint (the
+    first only after HC4 narrows q), undecided boxes on both constraint boundaries, and a
+    solution box that passes the inner test."""
+    m = MODELS["line_c"]
+    recs = header(m, ["detFx", "detFq"]) + [
+        "tree", "B 0 " + hx(0.25),
+        "P 1 %s %s" % (hx(0.0), hx(0.28125)),  # x <= 1/4: the slab q >= 0.28125 has x != q
+        "X c0",  # x = q <= 1/4: (q + 1) > 1.25 is false once HC4 has narrowed q to [0, 1/4]
+        "B 0 " + hx(0.3125),
+        "U 0 00",  # 1/4 <= x <= 5/16: on the boundary of constraint 0
+        "P 0 %s %s" % (hx(0.3125), hx(0.9375)),  # x >= 15/16: constraint 1 is false
+        "P 1 %s %s" % (hx(0.296875), hx(0.96875)),
+        "B 0 " + hx(0.875),
+        "S 1 +- %s %s %s %s %s %s %s" % (hx(0.25), hx(1.0), hx(0.3125), hx(0.875), hx(-1.0), hx(1.0), hx(-1.0)),
+        "U 2 00",  # 7/8 <= x <= 15/16: on the boundary of constraint 1
+        "end-tree 3", "links 0", "csncs 1", "csnc 0 1 1", "claim filtered 1", "claim lower-bound 1"]
+    return finish(recs)
+
+
+def many_periodic_cert(n=13):
+    """2n periodic variables and one undecided root box: the neighbourhood graph must not
+    enumerate the 3^(2n) shifts of a box spanning every period."""
+    text = "robot MANY\n" + "".join("pose x%d in [-pi, pi] periodic\n" % i for i in range(n))
+    text += "".join("command q%d in [-pi, pi] periodic\n" % i for i in range(n))
+    text += "".join("equation sin(x%d) - sin(q%d) = 0\n" % (i, i) for i in range(n))
+    m = dict(text=text, domain=[(-PI_UP, PI_UP)] * (2 * n))
+    return finish(header(m, []) + ["tree", "U 0 .", "end-tree 1", "links 0", "csncs 0", "claim filtered 0",
+                                   "claim lower-bound 0"])
+
+
+def with_model(cert, old, new):
+    """cert with `old` replaced by `new` in its embedded model, the model record rehashed."""
+    text = MODELS["line_c"]["text"]
+    assert old in text
+    t2 = text.replace(old, new).encode()
+    t1 = text.encode()
+    out = cert.replace("model %d %s" % (len(t1), hashlib.sha256(t1).hexdigest()),
+                       "model %d %s" % (len(t2), hashlib.sha256(t2).hexdigest()))
+    return out.replace(text, t2.decode())
+
+
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
     valid = line_certs()
     valid["circle"] = Solver(MODELS["circle"], 0.25).certificate(0.25)
     valid["sine"] = Solver(MODELS["sine"], 0.4).certificate(0.4)
+    valid["line_constrained"] = constrained_certs()
+    valid["many_periodic"] = many_periodic_cert()
     for d in ("valid", "invalid", "malformed"):
         os.makedirs(os.path.join(root, d), exist_ok=True)
     for name, text in valid.items():
@@ -375,6 +427,14 @@ def main():
         "discard_holds_solution": base.replace("B 1 " + hx(0.25), "B 1 " + hx(0.75)),
         "bisection_outside": base.replace("B 0 " + hx(0.5), "B 0 " + hx(1.5)),
     }
+    lc = valid["line_constrained"]
+    invalid.update({  # constraints: each breaks exactly one check of LINE-C
+        "constraint_inner_test_fails": with_model(lc, "x <= 0.875", "x <= 0.75"),
+        "constraint_discard_not_false": with_model(lc, "> 1.25", "> 1.125"),
+        "constraint_slab_not_false": lc.replace("P 0 %s %s" % (hx(0.3125), hx(0.9375)),
+                                                "P 0 %s %s" % (hx(0.3125), hx(0.875))),
+        "constraint_model_changed_not_rehashed": lc.replace("x <= 0.875", "x <= 0.625"),
+    })
     malformed = {
         "decimal_real": base.replace("B 0 " + hx(0.5), "B 0 0.5"),
         "double_space": base.replace("X eq1", "X  eq1"),
@@ -382,10 +442,14 @@ def main():
         "truncated": base[: len(base) // 2],
         "after_end": base + "garbage\n",
         "unknown_record": base.replace("X eq1", "Z eq1"),
+        "constraint_constant_comparison": with_model(lc, "x <= 0.875", "1 <= 0.875"),
+        "constraint_bare_periodic": with_model(lc, "q in [0, 1]\nequation x - q", "q in [0, 2*pi] periodic\nequation x - sin(q)"),
+        "constraint_dangling_and": with_model(lc, "x <= 0.875", "x <= 0.875 and"),
+        "constraint_bad_hint": lc.replace("X c0", "X c"),
     }
     for d, group in (("invalid", invalid), ("malformed", malformed)):
         for name, text in group.items():
-            assert text != base, name
+            assert text not in (base, lc), name
             with open(os.path.join(root, d, name + ".cert"), "w") as f:
                 f.write(text)
 

@@ -3,11 +3,12 @@
 
 Usage: tamper.py CHECK_CERT TESTS_DIR WORKDIR [ASPECTS ROBOTS_DIR]
 
-Each mutation takes a valid certificate (a real PRRP certificate solved by ASPECTS when it
-is given, and the golden certificates of TESTS_DIR/valid), changes it, and states the exit
-code check_cert must give: 1 (REJECTED) for a certificate that parses but claims something
-false, 2 (MALFORMED) for one that breaks the format, 0 for a changed hint that still proves
-every claim. Every mutation must change the file and be applicable; the script fails
+Each mutation takes a valid certificate (real PRRP and constrained RRRRR joint-limit
+certificates solved by ASPECTS when it is given, and the golden certificates of
+TESTS_DIR/valid), changes it, and states the exit code check_cert must give: 1 (REJECTED)
+for a certificate that parses but claims something false, 2 (MALFORMED) for one that breaks
+the format, 0 for a changed hint that still proves every claim; optionally also a word of
+the message, when the reason matters (constraints). Every mutation must change the file and be applicable; the script fails
 otherwise, so the suite cannot silently shrink.
 """
 import hashlib
@@ -86,6 +87,13 @@ def hash_digit(c):
 def model_changed(c, rehash):
     i = next(k for k in range(3, c.body) if c.lines[k].startswith("constant l = 1"))
     c.lines[i] = "constant l = 2"
+    return (c.rehash() if rehash else c).text()
+
+
+def constraint_changed(c, old, new, rehash=True):
+    i = next(k for k in range(3, c.body) if c.lines[k].startswith("constraint"))
+    assert old in c.lines[i]
+    c.lines[i] = c.lines[i].replace(old, new)
     return (c.rehash() if rehash else c).text()
 
 
@@ -272,6 +280,24 @@ def mutations_real(base):
     ]
 
 
+def mutations_constrained():
+    """On RRRRR joint limit: (A' - P).(B' - P) >= 0 (FORMAT.md, "Constraints")."""
+    return [
+        # Stricter constraint: the recorded solution boxes no longer pass the inner test.
+        ("constraint_tightened_inner_test", lambda c: constraint_changed(c, ">= 0", ">= 5"), (1, "inner test")),
+        # Looser constraint: the cells discarded as X c0 now hold feasible solutions.
+        ("constraint_relaxed_discard", lambda c: constraint_changed(c, ">= 0", ">= -5"), (1, "discarded cell")),
+        # A solution cell (the constraint is True on its box) discarded as infeasible.
+        ("discard_c0_of_feasible_cell", lambda c: edit(c, c.find("S")[len(c.find("S")) // 2], "X c0"),
+         (1, "discarded cell")),
+        ("constraint_changed_not_rehashed", lambda c: constraint_changed(c, ">= 0", ">= 5", False), (1, "SHA-256")),
+        ("constraint_removed_rehashed", lambda c: constraint_changed(c, "constraint", "# constraint"),
+         (1, "discarded cell")),
+        ("discard_hint_c0_to_hs", lambda c: c.text().replace("\nX c0\n", "\nX hs\n"), 0),
+        ("discard_hint_malformed", lambda c: c.text().replace("\nX c0\n", "\nX c00\n", 1), 2),
+    ]
+
+
 def claim_end(c):
     c.lines[-1] = "end %d" % (len(c.lines) + 5)
     return c.text()
@@ -325,19 +351,23 @@ def run(check, path):
 def main():
     check, tests, work = sys.argv[1], sys.argv[2], sys.argv[3]
     os.makedirs(work, exist_ok=True)
-    if len(sys.argv) > 5:  # the real thing: a PRRP certificate written by the solver
+    bases = []  # (tag, path, mutations)
+    if len(sys.argv) > 5:  # the real thing: certificates written by the solver
         aspects, robots = sys.argv[4], sys.argv[5]
-        subprocess.run([aspects, "solve", os.path.join(robots, "prrp.robot"), "--eps", "0.1",
-                        "--out", os.path.join(work, "prrp"), "--quiet"], check=True)
-        base_path, tag = os.path.join(work, "prrp", "aspects.cert"), "prrp"
+        for robot, eps, muts in (("prrp", "0.1", mutations_real(None)), ("rrrrr_joint_limit", "0.5", mutations_constrained())):
+            subprocess.run([aspects, "solve", os.path.join(robots, robot + ".robot"), "--eps", eps,
+                            "--out", os.path.join(work, robot), "--quiet"], check=True)
+            bases.append((robot, os.path.join(work, robot, "aspects.cert"), muts))
     else:
-        base_path, tag = os.path.join(tests, "valid", "circle.cert"), "circle"
-    code, msg = run(check, base_path)
-    if code != 0:
-        print("FAIL base certificate %s not verified: %s" % (base_path, msg))
-        return 1
-    base = open(base_path).read()
-    cases = [("%s/%s" % (tag, name), base, fn, want) for name, fn, want in mutations_real(base)]
+        bases.append(("circle", os.path.join(tests, "valid", "circle.cert"), mutations_real(None)))
+    cases = []
+    for tag, base_path, muts in bases:
+        code, msg = run(check, base_path)
+        if code != 0:
+            print("FAIL base certificate %s not verified: %s" % (base_path, msg))
+            return 1
+        base = open(base_path).read()
+        cases += [("%s/%s" % (tag, name), base, fn, want) for name, fn, want in muts]
     for file, name, fn, want in mutations_golden():
         cases.append(("%s/%s" % (file, name), open(os.path.join(tests, "valid", file + ".cert")).read(), fn, want))
     failed = 0
@@ -356,10 +386,12 @@ def main():
         with open(path, "w", newline="") as f:
             f.write(text)
         code, msg = run(check, path)
-        ok = code == want
-        print("%s %-55s exit %d (want %d): %s" % ("ok  " if ok else "FAIL", name, code, want, msg[:110]))
+        want, word = want if isinstance(want, tuple) else (want, "")
+        ok = code == want and word in msg
+        print("%s %-55s exit %d (want %d%s): %s" % ("ok  " if ok else "FAIL", name, code, want,
+                                                   ", '%s'" % word if word else "", msg[:110]))
         failed += not ok
-    print("%d mutations, %d failed (base: %s)" % (len(cases), failed, base_path))
+    print("%d mutations, %d failed (bases: %s)" % (len(cases), failed, ", ".join(b[1] for b in bases)))
     return 1 if failed else 0
 
 
