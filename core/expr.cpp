@@ -96,7 +96,8 @@ int Dag::unary(Op op, int a) {
   return add_node(Node{op, a, -1, 0});
 }
 
-int Dag::binary(Op op, int a, int b) {
+int Dag::binary(Op op, int a, int b, bool keep_operands) {
+  auto droppable = [&](int x) { return !keep_operands || is_constant(x); };
   switch (op) {
     case Op::Add:
       if (a == zero_) return b;
@@ -108,13 +109,13 @@ int Dag::binary(Op op, int a, int b) {
       if (a == zero_) return unary(Op::Neg, b);
       break;
     case Op::Mul:
-      if (a == zero_ || b == zero_) return zero_;
+      if ((a == zero_ && droppable(b)) || (b == zero_ && droppable(a))) return zero_;
       if (a == one_) return b;
       if (b == one_) return a;
       if (a > b) std::swap(a, b);
       break;
     case Op::Div:
-      if (a == zero_) return zero_;
+      if (a == zero_ && droppable(b)) return zero_;
       if (b == one_) return a;
       break;
     default:

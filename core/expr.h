@@ -43,7 +43,10 @@ class Dag {
   int constant(double v);  // exact double
   int var(int index);
   int unary(Op op, int a);
-  int binary(Op op, int a, int b);
+  // Simplifies x+0, x*1, x*0, 0/x... With keep_operands, never drops an operand that
+  // depends on a variable (x*0 stays): the model's own expressions must keep every
+  // sub-expression, since a point where one is undefined is not a solution.
+  int binary(Op op, int a, int b, bool keep_operands = false);
   int pow(int a, int k);
   int zero() const { return zero_; }
   int one() const { return one_; }

@@ -388,7 +388,7 @@ class Parser {
     int a = unary();
     while (is_punct("*") || is_punct("/")) {
       Op op = next().text == "*" ? Op::Mul : Op::Div;
-      a = m_.dag.binary(op, a, unary());
+      a = m_.dag.binary(op, a, unary(), /*keep_operands=*/true);
       if (m_.dag.depth(a) > kMaxDepth) fail(at, "expression too long (depth over 1000)");
     }
     return a;

@@ -77,6 +77,13 @@ TEST(ConstraintTruth, UndefinedPointsAreInfeasible) {
   EXPECT_EQ(truth_on("sqrt(x) >= 0", 1, 2), Truth::True);
 }
 
+TEST(ConstraintTruth, ZeroTimesUndefinedIsStillUndefined) {
+  // 0*sqrt(-x) must not be simplified away: it is undefined for x > 0.
+  EXPECT_EQ(truth_on("x + 0*sqrt(-x) >= 0", 1, 2), Truth::False);
+  EXPECT_EQ(truth_on("x + 0/sqrt(-x) >= 0", 1, 2), Truth::False);
+  EXPECT_EQ(truth_on("x + 0*x >= 0", 1, 2), Truth::True);
+}
+
 TEST(ConstraintTruth, AtomEnclosuresContainPointValues) {
   // The joint-limit atom (A' - P).(B' - P) of rrrrr_joint_limit.robot, evaluated
   // independently in long double at random points of random boxes.
