@@ -50,3 +50,10 @@ target_compile_definitions(test_evaluator_differential PRIVATE
   ASPECTS_ROBOTS_DIR="${ASPECTS_TEST_ROBOTS_DIR}")
 gtest_discover_tests(test_evaluator_differential TEST_PREFIX "test_evaluator_differential."
   DISCOVERY_MODE PRE_TEST PROPERTIES TIMEOUT 120 LABELS core)
+
+# The paper-reproduction pipeline in quick mode (all eight robots, coarse precisions,
+# every certificate checked), so that it cannot rot.
+add_test(NAME paper_repro.quick
+         COMMAND ${PROJECT_SOURCE_DIR}/paper_repro/run_all.sh --quick --build ${PROJECT_BINARY_DIR}
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/paper_repro_quick)
+set_tests_properties(paper_repro.quick PROPERTIES TIMEOUT 1200 LABELS "acceptance;slow")

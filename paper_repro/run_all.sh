@@ -1,0 +1,350 @@
+#!/usr/bin/env bash
+# Reproduces the experiments of "A Branch and Prune Algorithm for the Computation of
+# Generalized Aspects of Parallel Robots" (Table 1, Figures 2 and 5-11) with `aspects`,
+# checks every certificate with `check_cert`, and writes OUT (default paper_repro/out):
+#
+#   table1.md, table1.csv   the paper's Table 1 beside our numbers
+#   figures/*.png           Figures 2, 5, 6, 7 and 8-11 (those whose runs exist)
+#   archive/                every certificate, compressed, and archive/MANIFEST
+#   runs/KEY/               summary.json, model.robot, solve.log, check.log, record.txt
+#   run_info.txt            mode, command line, commit, build, total time
+#
+# Everything is written in a temporary directory next to OUT and renamed at the end, so
+# an interrupted run (Ctrl-C, SIGTERM) leaves OUT as it was.
+#
+# Usage: paper_repro/run_all.sh [options]
+#   --quick             coarse precisions, the whole thing in a few minutes on 2 cores
+#   --only KEYS         robots to run (repeatable, or a comma list) among
+#                       prrp rprpr rrrrr 3rpr 3rrr_star rrrrr_collisions
+#                       rrrrr_joint_limit rrrrr_obstacle     (default: all)
+#   --eps KEY=E         override the precision of one robot (repeatable)
+#   --threads N         passed to `aspects solve --threads` (if the tool has it)
+#   --build DIR         build directory holding apps/aspects and certificates/check_cert
+#                       (default: the repository's build/)
+#   --timeout SECONDS   wall-clock limit for each solve and for each check (default none);
+#                       a run that hits it is recorded as "did not finish" and the others go on
+#   --out DIR           output directory (default paper_repro/out)
+#   --models DIR        robot models (default: the repository's robots/)
+#   --keep-boxes        keep runs/KEY/boxes.csv (large: ~180 bytes per box)
+#   --fail-fast         stop at the first failure instead of finishing the other robots
+#   -h, --help
+#
+# Exit status: 0 all selected runs solved (or hit --timeout, or have no model file) and
+# every certificate was VERIFIED; 1 a step failed (solve error, check_cert rejection,
+# figure error): OUT is still written, with the failure in the table, unless --fail-fast;
+# 2 usage error or missing tool; 130/143 interrupted (nothing written).
+set -euo pipefail
+
+SCRIPT_DIR=$(cd "$(dirname "$0")" && pwd)
+REPO_ROOT=$(cd "$SCRIPT_DIR/.." && pwd)
+PY=/usr/bin/python3
+
+ALL_KEYS=(prrp rprpr rrrrr 3rpr 3rrr_star rrrrr_collisions rrrrr_joint_limit rrrrr_obstacle)
+declare -A NAME=(
+  [prrp]="PRRP" [rprpr]="RPRPR" [rrrrr]="RRRRR" [3rpr]="3-RPR" [3rrr_star]="3-RRR*"
+  [rrrrr_collisions]="RRRRR collisions" [rrrrr_joint_limit]="RRRRR joint limit"
+  [rrrrr_obstacle]="RRRRR obstacle")
+# The paper's precisions (Table 1; Section 5.4 used 0.01 for the constrained pictures,
+# 0.1 is enough for the counts).
+declare -A EPS_FULL=(
+  [prrp]=0.1 [rprpr]=0.1 [rrrrr]=0.1 [3rpr]=0.3 [3rrr_star]=0.008
+  [rrrrr_collisions]=0.1 [rrrrr_joint_limit]=0.1 [rrrrr_obstacle]=0.1)
+# --quick: measured on 2 cores (see README.md): about 5 minutes in all. The RRRRR family
+# runs at 0.1 as in the full mode (each ~20-40 s + ~15 s check); at 0.2 the obstacle run's
+# size-ratio filter keeps 138 CSNCs. 3-RPR: eps 1.0 takes > 300 s, 1.5 takes 190 s and
+# keeps a single CSNC, 2.0 takes ~30-60 s. 3-RRR*: 0.5 takes ~35 s but its certificate is
+# currently rejected (see README.md), 0.6 keeps 6 CSNCs in ~10-30 s.
+declare -A EPS_QUICK=(
+  [prrp]=0.1 [rprpr]=0.1 [rrrrr]=0.1 [3rpr]=2.0 [3rrr_star]=0.6
+  [rrrrr_collisions]=0.1 [rrrrr_joint_limit]=0.1 [rrrrr_obstacle]=0.1)
+
+usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; }
+die_usage() { echo "run_all.sh: $*" >&2; echo "run 'run_all.sh --help' for usage" >&2; exit 2; }
+
+QUICK=0; THREADS=""; TIMEOUT=""; KEEP_BOXES=0; FAIL_FAST=0
+BUILD="$REPO_ROOT/build"; OUT="$SCRIPT_DIR/out"; MODELS="$REPO_ROOT/robots"
+ONLY=(); declare -A EPS_OVERRIDE=()
+ARGV_STR="$0 $*"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) QUICK=1 ;;
+    --only) [ $# -ge 2 ] || die_usage "--only needs an argument"
+            IFS=',' read -r -a _k <<< "$2"; ONLY+=("${_k[@]}"); shift ;;
+    --only=*) IFS=',' read -r -a _k <<< "${1#--only=}"; ONLY+=("${_k[@]}") ;;
+    --eps) [ $# -ge 2 ] || die_usage "--eps needs KEY=E"
+           [[ "$2" == *=* ]] || die_usage "--eps needs KEY=E, got '$2'"
+           EPS_OVERRIDE[${2%%=*}]=${2#*=}; shift ;;
+    --threads) [ $# -ge 2 ] || die_usage "--threads needs a number"; THREADS=$2; shift ;;
+    --build) [ $# -ge 2 ] || die_usage "--build needs a directory"; BUILD=$2; shift ;;
+    --timeout) [ $# -ge 2 ] || die_usage "--timeout needs seconds"; TIMEOUT=$2; shift ;;
+    --out) [ $# -ge 2 ] || die_usage "--out needs a directory"; OUT=$2; shift ;;
+    --models) [ $# -ge 2 ] || die_usage "--models needs a directory"; MODELS=$2; shift ;;
+    --keep-boxes) KEEP_BOXES=1 ;;
+    --fail-fast) FAIL_FAST=1 ;;
+    -h|--help) usage; exit 0 ;;
+    *) die_usage "unknown argument '$1'" ;;
+  esac
+  shift
+done
+
+is_key() { local k; for k in "${ALL_KEYS[@]}"; do [ "$k" = "$1" ] && return 0; done; return 1; }
+is_pos_number() { [[ "$1" =~ ^([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$ ]] && awk -v v="$1" 'BEGIN{exit !(v>0)}'; }
+
+KEYS=()
+if [ ${#ONLY[@]} -eq 0 ]; then
+  KEYS=("${ALL_KEYS[@]}")
+else
+  for k in "${ONLY[@]}"; do
+    [ -n "$k" ] || continue
+    is_key "$k" || die_usage "unknown robot '$k' (known: ${ALL_KEYS[*]})"
+  done
+  # Keep the paper's order, drop duplicates.
+  for k in "${ALL_KEYS[@]}"; do
+    for o in "${ONLY[@]}"; do [ "$o" = "$k" ] && { KEYS+=("$k"); break; }; done
+  done
+fi
+for k in "${!EPS_OVERRIDE[@]}"; do
+  is_key "$k" || die_usage "--eps: unknown robot '$k'"
+  is_pos_number "${EPS_OVERRIDE[$k]}" || die_usage "--eps $k=${EPS_OVERRIDE[$k]}: not a positive number"
+done
+[ -z "$THREADS" ] || [[ "$THREADS" =~ ^[1-9][0-9]*$ ]] || die_usage "--threads: not a positive integer: '$THREADS'"
+[ -z "$TIMEOUT" ] || is_pos_number "$TIMEOUT" || die_usage "--timeout: not a positive number: '$TIMEOUT'"
+
+ASPECTS="$BUILD/apps/aspects"
+CHECK="$BUILD/certificates/check_cert"
+for tool in "$ASPECTS" "$CHECK"; do
+  if [ ! -x "$tool" ]; then
+    echo "run_all.sh: $tool not found or not executable." >&2
+    echo "  build it:  cmake -S $REPO_ROOT -B $BUILD -DCMAKE_BUILD_TYPE=Release && cmake --build $BUILD -j2 --target aspects check_cert" >&2
+    echo "  or pass --build DIR" >&2
+    exit 2
+  fi
+done
+[ -x "$PY" ] || { echo "run_all.sh: $PY not found (Debian's python3 with python3-matplotlib)" >&2; exit 2; }
+[ -d "$MODELS" ] || { echo "run_all.sh: model directory $MODELS not found" >&2; exit 2; }
+ASPECTS=$(cd "$(dirname "$ASPECTS")" && pwd)/aspects
+CHECK=$(cd "$(dirname "$CHECK")" && pwd)/check_cert
+MODELS=$(cd "$MODELS" && pwd)
+
+THREAD_ARGS=()
+if [ -n "$THREADS" ]; then
+  solve_help=$("$ASPECTS" solve --help 2>&1 || true)
+  if [[ "$solve_help" == *--threads* ]]; then
+    THREAD_ARGS=(--threads "$THREADS")
+  else
+    echo "run_all.sh: note: this aspects has no --threads option; running with its default" >&2
+  fi
+fi
+TIMEOUT_CMD=()
+[ -z "$TIMEOUT" ] || TIMEOUT_CMD=(timeout -s TERM -k 10 "$TIMEOUT")
+
+if command -v zstd > /dev/null 2>&1; then
+  COMPRESS=(zstd -q -12 -T0 -c); CEXT=zst
+else
+  COMPRESS=(gzip -9 -c); CEXT=gz
+fi
+
+# ------------------------------------------------------------------ output staging
+mkdir -p "$(dirname "$OUT")"
+OUT=$(cd "$(dirname "$OUT")" && pwd)/$(basename "$OUT")
+TMP=$(mktemp -d "$(dirname "$OUT")/.$(basename "$OUT").tmp.XXXXXX")
+chmod "$(printf '%o' $(( 0777 & ~$(umask) )))" "$TMP"   # mktemp makes it 0700
+CHILD=""
+exec 3>&2   # the script's stderr, for messages from traps run inside redirected commands
+cleanup() {
+  local sig=$1
+  if [ -n "$CHILD" ]; then kill -TERM "$CHILD" 2> /dev/null || true; wait "$CHILD" 2> /dev/null || true; fi
+  rm -rf "$TMP"
+  if [ "$sig" != EXIT ]; then
+    echo "run_all.sh: interrupted ($sig); $OUT left unchanged" >&3
+    trap - EXIT
+    [ "$sig" = INT ] && exit 130 || exit 143
+  fi
+}
+trap 'cleanup INT' INT
+trap 'cleanup TERM' TERM
+trap 'cleanup HUP' HUP
+trap 'cleanup EXIT' EXIT
+
+# Runs a command in the background and waits, so that a signal reaches the trap at once.
+run_child() {
+  "$@" &
+  CHILD=$!
+  local rc=0
+  wait "$CHILD" || rc=$?
+  CHILD=""
+  return $rc
+}
+now() { date +%s.%N; }
+elapsed() { awk -v a="$1" -v b="$2" 'BEGIN{printf "%.3f", b-a}'; }
+log() { echo "$*" >&2; }
+
+mkdir -p "$TMP/runs" "$TMP/archive" "$TMP/figures"
+MANIFEST="$TMP/archive/MANIFEST"
+{
+  echo "# Certificates of paper_repro/run_all.sh, $(date -u +%Y-%m-%dT%H:%M:%SZ)."
+  echo "# Decompress with 'zstd -d FILE' (.zst) or 'gunzip FILE' (.gz), then 'check_cert FILE.cert'."
+  printf '# %s\n' "file	sha256_compressed	sha256_uncompressed	bytes_uncompressed	robot	eps	precision_bits	tool	check"
+} > "$MANIFEST"
+
+MODE=full; if [ $QUICK -eq 1 ]; then MODE=quick; fi
+T_START=$(now)
+FAILURES=()
+WARNINGS=()
+N=${#KEYS[@]}
+log "run_all.sh: $MODE mode, ${N} robot(s): ${KEYS[*]}; build $BUILD; staging in $TMP"
+
+i=0
+for key in "${KEYS[@]}"; do
+  i=$((i + 1))
+  name=${NAME[$key]}
+  if [ -n "${EPS_OVERRIDE[$key]:-}" ]; then eps=${EPS_OVERRIDE[$key]}
+  elif [ $QUICK -eq 1 ]; then eps=${EPS_QUICK[$key]}
+  else eps=${EPS_FULL[$key]}; fi
+  rd="$TMP/runs/$key"; mkdir -p "$rd"
+  rec="$rd/record.txt"
+  { echo "key=$key"; echo "name=$name"; echo "eps=$eps"; echo "mode=$MODE"; echo "timeout=$TIMEOUT"; } > "$rec"
+  model="$MODELS/$key.robot"
+  if [ ! -f "$model" ]; then
+    log "[$i/$N] $name: model not available ($model), skipped"
+    { echo "status=unavailable"; echo "message=model not available ($key.robot)"; } >> "$rec"
+    continue
+  fi
+  cp "$model" "$rd/model.robot"
+
+  log "[$i/$N] $name eps=$eps solving ..."
+  t0=$(now); rc=0
+  run_child "${TIMEOUT_CMD[@]}" "$ASPECTS" solve "$model" --eps "$eps" "${THREAD_ARGS[@]}" \
+    --progress --out "$rd" > "$rd/solve.log" 2> "$rd/solve.err" || rc=$?
+  t1=$(now); wall=$(elapsed "$t0" "$t1")
+  echo "solve_wall=$wall" >> "$rec"
+  if [ $rc -eq 124 ] || { [ -n "$TIMEOUT" ] && [ $rc -eq 137 ]; }; then
+    msg="did not finish at eps $eps within $TIMEOUT s"
+    # The solver's last progress report (--progress, \r-separated), if any.
+    last_progress=$(tr '\r' '\n' < "$rd/solve.err" | grep '^\[aspects\]' | tail -n 1 | sed 's/^\[aspects\] *//; s/ *$//' || true)
+    [ -z "$last_progress" ] || msg="$msg (last progress: $last_progress)"
+    log "[$i/$N] $name: $msg"
+    { echo "status=timeout"; echo "message=$msg"; } >> "$rec"
+    find "$rd" -maxdepth 1 -type f ! -name '*.log' ! -name '*.err' ! -name record.txt ! -name model.robot -delete
+    continue
+  fi
+  if [ $rc -eq 2 ] && grep -q 'not supported yet' "$rd/solve.err"; then
+    # The model uses a statement this aspects build does not implement yet (e.g. the
+    # `constraint` inequalities of the constrained RRRRR): reported, not a failure.
+    msg="not supported by this aspects build: $(grep -m 1 'not supported yet' "$rd/solve.err" | sed 's/^.*error: //')"
+    log "[$i/$N] $name: $msg"
+    { echo "status=unsupported"; echo "message=$msg"; } >> "$rec"
+    WARNINGS+=("$name: $msg")
+    continue
+  fi
+  if [ $rc -ne 0 ] || [ ! -f "$rd/summary.json" ] || [ ! -f "$rd/aspects.cert" ] || [ ! -f "$rd/boxes.csv" ]; then
+    last=$(tail -n 3 "$rd/solve.err" | tr '\n' ' ' | tr -s ' ')
+    msg="aspects solve failed (exit $rc): ${last:-no output}"
+    log "[$i/$N] $name: ERROR: $msg"
+    log "  log: $rd/solve.err (kept in OUT/runs/$key/)"
+    { echo "status=solve_failed"; echo "message=$msg"; } >> "$rec"
+    FAILURES+=("$name: $msg")
+    if [ $FAIL_FAST -eq 1 ]; then log "run_all.sh: --fail-fast: stopping; nothing written"; exit 1; fi
+    continue
+  fi
+  log "[$i/$N] $name solved in ${wall} s; check_cert ..."
+
+  cert="$rd/aspects.cert"
+  cert_bytes=$(stat -c %s "$cert")
+  tool=$(sed -n '2{s/^tool //;p;q}' "$cert")
+  prec=$(sed -n 's/^precision \([0-9]*\)$/\1/p;/^tree$/q' "$cert" | head -n 1)
+  t0=$(now); crc=0
+  run_child "${TIMEOUT_CMD[@]}" "$CHECK" "$cert" > "$rd/check.log" 2>&1 || crc=$?
+  t1=$(now); cwall=$(elapsed "$t0" "$t1")
+  check_line=$(grep -m 1 -E '^check_cert: (VERIFIED|REJECTED)' "$rd/check.log" || true)
+  { echo "check_wall=$cwall"; echo "check_exit=$crc"; echo "check_line=$check_line"
+    echo "cert_bytes=$cert_bytes"; echo "tool=$tool"; echo "precision_bits=$prec"; } >> "$rec"
+  if [ $crc -eq 0 ] && [[ "$check_line" == "check_cert: VERIFIED"* ]]; then
+    check=VERIFIED
+    log "[$i/$N] $name certificate VERIFIED in ${cwall} s"
+    echo "status=ok" >> "$rec"
+  elif [ $crc -eq 124 ] || { [ -n "$TIMEOUT" ] && [ $crc -eq 137 ]; }; then
+    check="NOT CHECKED (check_cert did not finish within $TIMEOUT s)"
+    log "[$i/$N] $name: $check"
+    { echo "status=check_timeout"; echo "message=$check"; } >> "$rec"
+  else
+    check="REJECTED (check_cert exit $crc)"
+    msg="check_cert rejected the certificate (exit $crc): ${check_line:-$(tail -n 2 "$rd/check.log" | tr '\n' ' ')}"
+    log "[$i/$N] $name: ERROR: $msg"
+    { echo "status=check_failed"; echo "message=$msg"; } >> "$rec"
+    FAILURES+=("$name: $msg")
+  fi
+  echo "check=$check" >> "$rec"
+
+  # Archive the certificate (also a rejected one: it is the evidence).
+  afile="${key}_eps${eps}.cert.$CEXT"
+  log "[$i/$N] $name compressing the certificate ($(numfmt --to=iec "$cert_bytes")B) ..."
+  run_child "${COMPRESS[@]}" "$cert" > "$TMP/archive/$afile"
+  sha_c=$(sha256sum "$TMP/archive/$afile" | cut -d' ' -f1)
+  sha_u=$(sha256sum "$cert" | cut -d' ' -f1)
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$afile" "$sha_c" "$sha_u" "$cert_bytes" \
+    "$name" "$eps" "$prec" "$tool" "$check" >> "$MANIFEST"
+  { echo "archive=$afile"; echo "archive_bytes=$(stat -c %s "$TMP/archive/$afile")"; echo "cert_sha256=$sha_u"; } >> "$rec"
+  rm -f "$cert"
+  if [ $FAIL_FAST -eq 1 ] && [ ${#FAILURES[@]} -gt 0 ]; then
+    log "run_all.sh: --fail-fast: stopping; nothing written"; exit 1
+  fi
+done
+
+# ------------------------------------------------------------------ figures and table
+FIG_DIRS=()
+for key in "${KEYS[@]}"; do
+  if [ -f "$TMP/runs/$key/boxes.csv" ]; then FIG_DIRS+=("$TMP/runs/$key"); fi
+done
+if [ ${#FIG_DIRS[@]} -gt 0 ]; then
+  log "[figures] drawing from ${#FIG_DIRS[@]} run(s) ..."
+  t0=$(now); frc=0
+  run_child "$PY" "$SCRIPT_DIR/figures.py" "$TMP/figures" "${FIG_DIRS[@]}" > "$TMP/figures/figures.log" 2>&1 || frc=$?
+  log "[figures] done in $(elapsed "$t0" "$(now)") s: $(cd "$TMP/figures" && ls *.png 2> /dev/null | tr '\n' ' ')"
+  if [ $frc -ne 0 ]; then
+    FAILURES+=("figures.py failed (exit $frc): $(tail -n 3 "$TMP/figures/figures.log" | tr '\n' ' ')")
+    log "run_all.sh: ERROR: figures.py failed, see figures/figures.log"
+  fi
+fi
+if [ $KEEP_BOXES -eq 0 ]; then
+  rm -f "$TMP"/runs/*/boxes.csv
+fi
+
+T_END=$(now)
+{
+  echo "mode=$MODE"
+  echo "command=$ARGV_STR"
+  echo "date_utc=$(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "host=$(uname -n) $(nproc) cores, $(awk '/MemTotal/{printf "%.1f GiB", $2/1048576}' /proc/meminfo)"
+  echo "commit=$(git -C "$REPO_ROOT" rev-parse --short HEAD 2> /dev/null || echo unknown)$( [ -n "$(git -C "$REPO_ROOT" status --porcelain 2> /dev/null | head -n 1)" ] && echo ' (working tree modified)')"
+  echo "aspects=$ASPECTS"
+  echo "check_cert=$CHECK"
+  echo "threads_option=${THREADS:-default}"
+  echo "timeout=${TIMEOUT:-none}"
+  echo "total_wall_seconds=$(elapsed "$T_START" "$T_END")"
+} > "$TMP/run_info.txt"
+
+"$PY" "$SCRIPT_DIR/make_table.py" "$TMP" "${KEYS[@]}"
+
+# ------------------------------------------------------------------ publish
+trap '' INT TERM HUP
+if [ -e "$OUT" ]; then
+  OLD="$OUT.old.$$"
+  mv "$OUT" "$OLD"
+  mv "$TMP" "$OUT"
+  rm -rf "$OLD"
+else
+  mv "$TMP" "$OUT"
+fi
+trap - EXIT INT TERM HUP
+log "run_all.sh: wrote $OUT (table1.md, table1.csv, figures/, archive/) in $(elapsed "$T_START" "$(now)") s"
+if [ ${#WARNINGS[@]} -gt 0 ]; then
+  log "run_all.sh: note: ${#WARNINGS[@]} robot(s) not run:"
+  for w in "${WARNINGS[@]}"; do log "  - $w"; done
+fi
+if [ ${#FAILURES[@]} -gt 0 ]; then
+  log "run_all.sh: FAILED: ${#FAILURES[@]} step(s) failed:"
+  for f in "${FAILURES[@]}"; do log "  - $f"; done
+  exit 1
+fi
+exit 0
