@@ -242,6 +242,20 @@ bool Evaluator::project_periodic(Op op, Interval& r, Interval& a) {
   return a.intersect(hull);
 }
 
+// a ∩= (s ∪ −s): the preimage of an even function (sqr, |.|, even powers) from the
+// nonnegative preimage s.
+bool Evaluator::meet_symmetric(Interval& a, const Interval& s) {
+  mpfi_intersect(t2_.get(), a.get(), s.get());
+  mpfi_neg(t3_.get(), s.get());
+  mpfi_intersect(t3_.get(), a.get(), t3_.get());
+  bool e = true;
+  hull_into(t4_, e, t2_);
+  hull_into(t4_, e, t3_);
+  if (e) return false;
+  mpfi_set(a.get(), t4_.get());
+  return true;
+}
+
 bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Interval& target,
                            Box& box) {
   if (forward(program, box) == EvalStatus::Undefined) return false;
@@ -321,15 +335,7 @@ bool Evaluator::backward(int id, Box& box) {
       set_half_line_pos(t1_);
       if (!r.intersect(t1_)) return false;
       mpfi_sqrt(t1_.get(), r.get());  // [sqrt lo, sqrt hi]
-      mpfi_intersect(t2_.get(), a->get(), t1_.get());
-      mpfi_neg(t1_.get(), t1_.get());
-      mpfi_intersect(t3_.get(), a->get(), t1_.get());
-      bool e = true;
-      hull_into(t4_, e, t2_);
-      hull_into(t4_, e, t3_);
-      if (e) return false;
-      mpfi_set(a->get(), t4_.get());
-      return true;
+      return meet_symmetric(*a, t1_);
     }
     case Op::Pow: {
       if (n.k < 0) return true;  // weak but sound
@@ -342,15 +348,7 @@ bool Evaluator::backward(int id, Box& box) {
       mpfr_rootn_ui(L(t1_), L(r), k, MPFR_RNDD);
       mpfr_rootn_ui(R(t1_), R(r), k, MPFR_RNDU);
       if (!even) return a->intersect(t1_);
-      mpfi_intersect(t2_.get(), a->get(), t1_.get());
-      mpfi_neg(t1_.get(), t1_.get());
-      mpfi_intersect(t3_.get(), a->get(), t1_.get());
-      bool e = true;
-      hull_into(t4_, e, t2_);
-      hull_into(t4_, e, t3_);
-      if (e) return false;
-      mpfi_set(a->get(), t4_.get());
-      return true;
+      return meet_symmetric(*a, t1_);
     }
     case Op::Sqrt:
       set_half_line_pos(t1_);
@@ -365,19 +363,10 @@ bool Evaluator::backward(int id, Box& box) {
     case Op::Log:
       mpfi_exp(t1_.get(), r.get());
       return a->intersect(t1_);
-    case Op::Abs: {
+    case Op::Abs:
       set_half_line_pos(t1_);
       if (!r.intersect(t1_)) return false;
-      mpfi_intersect(t2_.get(), a->get(), r.get());
-      mpfi_neg(t1_.get(), r.get());
-      mpfi_intersect(t3_.get(), a->get(), t1_.get());
-      bool e = true;
-      hull_into(t4_, e, t2_);
-      hull_into(t4_, e, t3_);
-      if (e) return false;
-      mpfi_set(a->get(), t4_.get());
-      return true;
-    }
+      return meet_symmetric(*a, r);
     case Op::Asin:  // asin is a bijection [-1,1] -> [-pi/2, pi/2]
       mpfi_sin(t1_.get(), r.get());
       return a->intersect(t1_);

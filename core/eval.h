@@ -32,6 +32,7 @@ class Evaluator {
  private:
   bool backward(int id, Box& box);
   bool project_periodic(Op op, Interval& r, Interval& a);
+  bool meet_symmetric(Interval& a, const Interval& s);
   void eval_pow(Interval& out, const Interval& a, int k);
 
   // Transcendental functions cost most of an evaluation, and the same argument comes
