@@ -85,12 +85,12 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
                 {"discarded", r.discarded},
                 {"processed", r.processed}};
   j["links"] = {{"neighbor", r.neighbors.size()}, {"certified", r.certified_links.size()}};
-  long singular = 0;
-  for (int b = 0; b < r.boxes.size(); ++b)
-    if (!r.certified[b] && r.undecided_kind[b] == UndecidedKind::Singular) ++singular;
-  long boundary = 0;
-  for (int b = 0; b < r.boxes.size(); ++b)
-    if (!r.certified[b] && r.undecided_kind[b] == UndecidedKind::Constraint) ++boundary;
+  long singular = 0, boundary = 0;
+  for (int b = 0; b < r.boxes.size(); ++b) {
+    if (r.certified[b]) continue;
+    singular += r.undecided_kind[b] == UndecidedKind::Singular;
+    boundary += r.undecided_kind[b] == UndecidedKind::Constraint;
+  }
   j["boxes"]["undecided_not_p1"] = r.undecided - singular - boundary;
   j["boxes"]["undecided_not_p2"] = singular;
   j["boxes"]["undecided_constraint_boundary"] = boundary;

@@ -17,43 +17,26 @@ namespace {
 // (the Newton iterate can shift), so the cells alone cannot guide the search.
 std::vector<double> subtree_hulls(const std::vector<SearchNode>& tree, const BoxStore& R) {
   const int nv = R.nv();
+  // [+inf, -inf] is the empty hull: it meets nothing and is the identity of the union.
   std::vector<double> h(tree.size() * 2 * nv);
-  std::vector<uint8_t> empty(tree.size(), 1);
+  for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
   // Children have larger ids than their parent: a reverse sweep is bottom-up.
   for (size_t i = tree.size(); i-- > 0;) {
     const SearchNode& s = tree[i];
     double* hi = &h[i * 2 * nv];
     if (s.split_var < 0) {
-      if (s.leaf < 0) continue;
-      for (int v = 0; v < nv; ++v) {
-        hi[2 * v] = R.lo(s.leaf, v);
-        hi[2 * v + 1] = R.hi(s.leaf, v);
-      }
-      empty[i] = 0;
+      if (s.leaf >= 0)
+        for (int v = 0; v < nv; ++v) hi[2 * v] = R.lo(s.leaf, v), hi[2 * v + 1] = R.hi(s.leaf, v);
       continue;
     }
     for (int c : {s.left, s.right}) {
-      if (empty[c]) continue;
       const double* hc = &h[size_t(c) * 2 * nv];
       for (int v = 0; v < nv; ++v) {
-        if (empty[i] || hc[2 * v] < hi[2 * v]) hi[2 * v] = hc[2 * v];
-        if (empty[i] || hc[2 * v + 1] > hi[2 * v + 1]) hi[2 * v + 1] = hc[2 * v + 1];
-      }
-      if (empty[i]) {
-        for (int v = 0; v < nv; ++v) {
-          hi[2 * v] = hc[2 * v];
-          hi[2 * v + 1] = hc[2 * v + 1];
-        }
-        empty[i] = 0;
+        hi[2 * v] = std::min(hi[2 * v], hc[2 * v]);
+        hi[2 * v + 1] = std::max(hi[2 * v + 1], hc[2 * v + 1]);
       }
     }
   }
-  for (size_t i = 0; i < tree.size(); ++i)
-    if (empty[i])  // no output below: a hull that meets nothing
-      for (int v = 0; v < nv; ++v) {
-        h[i * 2 * nv + 2 * v] = INFINITY;
-        h[i * 2 * nv + 2 * v + 1] = -INFINITY;
-      }
   return h;
 }
 

@@ -57,7 +57,8 @@ class AspectsSearch : public BranchAndPruneSteps {
     // Additional constraints (paper 5.4): a box where one certainly fails holds no
     // feasible configuration.
     int violated = -1;
-    if (constraints_.evaluate(box, &violated) == Truth::False) {
+    pruned_truth_ = constraints_.evaluate(box, &violated);
+    if (pruned_truth_ == Truth::False) {
       if (sink_) sink_->discard(("c" + std::to_string(violated)).c_str());
       reason = n_ + 1 + violated;
       return false;
@@ -159,7 +160,8 @@ class AspectsSearch : public BranchAndPruneSteps {
 
   int32_t keep_undecided(const Box& box) override {
     int32_t index = store(box, false);
-    bool on_constraint = !constraints_.empty() && constraints_.evaluate(box) == Truth::Unknown;
+    // `box` is the box prune() just returned: its constraint truth is known.
+    bool on_constraint = pruned_truth_ == Truth::Unknown;
     out_.undecided_kind[index] = on_constraint ? UndecidedKind::Constraint : last_kind_;
     if (sink_) sink_->undecided(index, last_signs());
     return index;
@@ -241,6 +243,7 @@ class AspectsSearch : public BranchAndPruneSteps {
   IMatrix J_;
   SolutionProof proof_;
   UndecidedKind last_kind_ = UndecidedKind::NoExistence;
+  Truth pruned_truth_ = Truth::True;  // of the last box prune() kept
 };
 
 }  // namespace
@@ -258,8 +261,8 @@ struct SearchPart {
 // numbers the output boxes in that order (the order of the certificate's records).
 class PartMerger {
  public:
-  PartMerger(SearchPart& top, std::vector<SearchPart>& parts, AspectsResult& out)
-      : top_(top), parts_(parts), out_(out), p_(out.factors.size()) {}
+  PartMerger(std::vector<SearchPart>& parts, AspectsResult& out)
+      : parts_(parts), out_(out), p_(out.factors.size()) {}
 
   int32_t graft(SearchPart& part, int32_t i) {
     const SearchNode src = part.tree[i];
@@ -290,7 +293,6 @@ class PartMerger {
     return id;
   }
 
-  SearchPart& top_;
   std::vector<SearchPart>& parts_;
   AspectsResult& out_;
   size_t p_;
@@ -351,7 +353,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
       deferred[k].box.clear();
     }, tbb::simple_partitioner());
   });
-  PartMerger(top, parts, out).graft(top, 0);
+  PartMerger(parts, out).graft(top, 0);
   parts.clear();
   auto lap = [&, last = t0](const char* phase) mutable {
     auto now = std::chrono::steady_clock::now();

@@ -223,23 +223,25 @@ INSTANTIATE_TEST_SUITE_P(Rrrrr, InnerTest,
                            return s.substr(6, s.find('.') - 6);
                          });
 
-TEST(ConstrainedCounts, CollisionFreeRrrrrAtEps01) {
+namespace {
+AspectsResult solve_counts(const char* file, double eps) {
   set_working_precision(53);
-  Model m = load_model(robot_path("rrrrr_collisions.robot"));
+  Model m = load_model(robot_path(file));
   AspectsConfig cfg;
-  cfg.eps = 0.1;
-  AspectsResult r = compute_aspects(m, cfg);
+  cfg.eps = eps;
+  cfg.threads = 2;
+  return compute_aspects(m, cfg);
+}
+}  // namespace
+
+TEST(ConstrainedCounts, CollisionFreeRrrrrAtEps01) {
+  AspectsResult r = solve_counts("rrrrr_collisions.robot", 0.1);
   EXPECT_EQ(r.filtered, 10);  // paper 5.4.1: ten collision-free CSNCs
   EXPECT_EQ(r.separation.lower_bound, 10);
 }
 
 TEST(ConstrainedCounts, JointLimitedRrrrrAtEps01) {
-  set_working_precision(53);
-  Model m = load_model(robot_path("rrrrr_joint_limit.robot"));
-  AspectsConfig cfg;
-  cfg.eps = 0.1;
-  cfg.threads = 2;
-  AspectsResult r = compute_aspects(m, cfg);
+  AspectsResult r = solve_counts("rrrrr_joint_limit.robot", 0.1);
   // Paper 5.4.2: twelve joint-limited CSNCs. The certified bound reaches 12; the
   // size-ratio heuristic keeps two more (a pair of 479-box CSNCs, cut from larger ones
   // of the same sign class by undecided boxes): see the closing note of issue 5.
@@ -248,12 +250,7 @@ TEST(ConstrainedCounts, JointLimitedRrrrrAtEps01) {
 }
 
 TEST(ConstrainedCounts, ObstacleFreeRrrrrAtEps005) {
-  set_working_precision(53);
-  Model m = load_model(robot_path("rrrrr_obstacle.robot"));
-  AspectsConfig cfg;
-  cfg.eps = 0.05;
-  cfg.threads = 2;
-  AspectsResult r = compute_aspects(m, cfg);
+  AspectsResult r = solve_counts("rrrrr_obstacle.robot", 0.05);
   // Paper 5.4.3: 26 obstacle-free CSNCs; the certified bound reaches 26 at eps = 0.05
   // (24 at eps = 0.1), the size-ratio heuristic keeps 24 of them.
   EXPECT_EQ(r.separation.lower_bound, 26);

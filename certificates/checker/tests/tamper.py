@@ -12,19 +12,12 @@ the message, when the reason matters (constraints). Every mutation must change t
 otherwise, so the suite cannot silently shrink.
 """
 import hashlib
-import math
 import os
 import subprocess
 import sys
 
 
-def hx(v):
-    if v == 0:
-        return "-0x0p+0" if math.copysign(1, v) < 0 else "0x0p+0"
-    mant, exp = float.hex(v).split("p")
-    if "." in mant:
-        mant = mant.rstrip("0").rstrip(".")
-    return mant + "p" + exp
+from gen_corpus import hx  # C's %a form of a double, as the writer prints it
 
 
 class Cert:
