@@ -41,24 +41,21 @@ void hull_into(Interval& acc, bool& acc_empty, const Interval& part) {
 }  // namespace
 
 Evaluator::Evaluator(const Dag& dag)
-    : dag_(dag), v_(dag.size()), fwd_(dag.size()), cache_arg_(dag.size()), cache_val_(dag.size()),
-      cache_ok_(dag.size(), 0) {
+    : dag_(dag), v_(dag.size()), fwd_(dag.size()), trig_arg_(dag.size()), trig_sin_(dag.size()),
+      trig_cos_(dag.size()), trig_ok_(dag.size(), 0) {
   mpfi_const_pi(two_pi_.get());
   mpfi_mul_2ui(two_pi_.get(), two_pi_.get(), 1);
 }
 
-bool Evaluator::cached(int id, const Interval& arg, Interval& r) {
-  if (!cache_ok_[id]) return false;
-  const Interval& c = cache_arg_[id];
-  if (!mpfr_equal_p(L(c), L(arg)) || !mpfr_equal_p(R(c), R(arg))) return false;
-  mpfi_set(r.get(), cache_val_[id].get());
-  return true;
-}
-
-void Evaluator::remember(int id, const Interval& arg, const Interval& r) {
-  mpfi_set(cache_arg_[id].get(), arg.get());
-  mpfi_set(cache_val_[id].get(), r.get());
-  cache_ok_[id] = 1;
+const Interval& Evaluator::sin_cos_of(int arg_id, const Interval& arg, Op op) {
+  Interval& last = trig_arg_[arg_id];
+  bool same = trig_ok_[arg_id] && mpfr_equal_p(L(last), L(arg)) && mpfr_equal_p(R(last), R(arg));
+  if (!same) {
+    sincos_.enclose(arg, trig_sin_[arg_id], trig_cos_[arg_id]);
+    mpfi_set(last.get(), arg.get());
+    trig_ok_[arg_id] = 1;
+  }
+  return op == Op::Sin ? trig_sin_[arg_id] : trig_cos_[arg_id];
 }
 
 void Evaluator::eval_pow(Interval& out, const Interval& a, int k) {
@@ -161,12 +158,7 @@ EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
       }
       case Op::Sin:
       case Op::Cos:
-        if (cached(id, *a, r)) break;
-        if (n.op == Op::Sin)
-          mpfi_sin(r.get(), a->get());
-        else
-          mpfi_cos(r.get(), a->get());
-        remember(id, *a, r);
+        mpfi_set(r.get(), sin_cos_of(n.a, *a, n.op).get());
         break;
       case Op::Tan:
         mpfi_tan(r.get(), a->get());

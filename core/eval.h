@@ -8,6 +8,7 @@
 
 #include "expr.h"
 #include "interval.h"
+#include "sincos.h"
 
 namespace aspects {
 
@@ -35,17 +36,18 @@ class Evaluator {
   bool meet_symmetric(Interval& a, const Interval& s);
   void eval_pow(Interval& out, const Interval& a, int k);
 
-  // Transcendental functions cost most of an evaluation, and the same argument comes
-  // back often (HC4 rounds, Jacobians and factors on one box): a one-entry cache per
-  // node of its last argument and value.
-  bool cached(int id, const Interval& arg, Interval& r);
-  void remember(int id, const Interval& arg, const Interval& r);
+  // sin and cos cost most of an evaluation; the models take both of the same argument,
+  // and the same argument comes back often (HC4 rounds, Jacobians and factors on one
+  // box). So both are computed together and kept, per argument node, with the last
+  // argument they were computed for.
+  const Interval& sin_cos_of(int arg_id, const Interval& arg, Op op);
 
   const Dag& dag_;
   std::vector<Interval> v_;
   std::vector<Interval> fwd_;  // forward values, to see which nodes backward narrowed
-  std::vector<Interval> cache_arg_, cache_val_;
-  std::vector<uint8_t> cache_ok_;
+  std::vector<Interval> trig_arg_, trig_sin_, trig_cos_;
+  std::vector<uint8_t> trig_ok_;
+  SinCos sincos_;
   Interval t1_, t2_, t3_;
   Interval t4_;  // its endpoints double as mpfr scratch
   Interval two_pi_;
