@@ -31,8 +31,8 @@ int main(int argc, char** argv) {
   solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
   solve->add_flag("--quiet", so.quiet, "print no summary");
   solve->add_option("--bisect", so.bisect,
-                    "bisection strategy: round-robin (the paper) or pose-first")
-      ->check(CLI::IsMember({"round-robin", "pose-first"}))
+                    "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose when P2 failed)")
+      ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}))
       ->default_val("round-robin");
 
   try {

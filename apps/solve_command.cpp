@@ -106,6 +106,19 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
   nlohmann::json f = nlohmann::json::array();
   for (const auto& x : r.factors) f.push_back({{"expression", x.text}, {"origin", x.origin}});
   j["factors"] = f;
+  // Why boxes were decided as they were: each verdict of Prove on every box that
+  // survived Prune, the verdict on each undecided leaf, and what refuted discarded boxes.
+  nlohmann::json attempts, undecided;
+  for (int k = 0; k < kVerdicts; ++k) {
+    attempts[verdict_name(Verdict(k))] = r.diagnostics.attempts[k];
+    if (Verdict(k) != Verdict::Solution)
+      undecided[verdict_name(Verdict(k))] = r.diagnostics.undecided[k];
+  }
+  j["diagnostics"] = {{"prove_verdicts", attempts},
+                      {"undecided_verdicts", undecided},
+                      {"refuted", {{"hc4", r.diagnostics.refuted_by_equation},
+                                   {"hansen_sengupta", r.diagnostics.refuted_by_newton},
+                                   {"constraint", r.diagnostics.refuted_by_constraint}}}};
   j["peak_memory_mib"] = resident_mib();
   return j;
 }
@@ -125,7 +138,7 @@ int run_solve(const SolveOptions& opts) {
   cfg.tau = o.tau;
   cfg.keep_link_proofs = !o.no_cert;
   cfg.threads = o.threads;
-  cfg.bisection = o.bisect == "pose-first" ? Bisection::PoseFirst : Bisection::RoundRobin;
+  parse_bisector_kind(o.bisect, cfg.bisector);  // CLI11 already checked the name
   const bool tty = isatty(STDERR_FILENO);
   const bool show = o.progress || tty;
   auto start = std::chrono::steady_clock::now();

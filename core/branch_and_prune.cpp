@@ -4,8 +4,6 @@
 
 namespace aspects {
 
-double split_point(const Interval& x) { return x.mid(); }
-
 void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
                       SearchStats& stats, const std::function<void()>& on_progress,
                       int root_parent_split, int defer_depth,
@@ -41,20 +39,22 @@ void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
       continue;
     }
     int32_t index = -1;
-    if (steps.prove(it.box, index)) {
+    Verdict verdict = steps.prove(it.box, index);
+    if (verdict == Verdict::Solution) {
       node.fate = LeafFate::Solution;
       node.leaf = index;
       ++stats.solutions;
       continue;
     }
-    int var = steps.choose_split(it.box, it.parent_split);
-    if (var < 0) {
+    SplitChoice split = steps.choose_split(it.box, {it.parent_split, verdict});
+    if (split.var < 0) {
       node.fate = LeafFate::Undecided;
-      node.leaf = steps.keep_undecided(it.box);
+      node.leaf = steps.keep_undecided(it.box, verdict);
       ++stats.undecided;
       continue;
     }
-    double p = split_point(it.box[var]);
+    int var = split.var;
+    double p = split.at;
     steps.branched(var, p);
     int32_t left = int32_t(tree.size()), right = left + 1;
     node.split_var = var;

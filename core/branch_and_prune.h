@@ -10,7 +10,9 @@
 #include <functional>
 #include <vector>
 
+#include "bisector.h"
 #include "interval.h"
+#include "verdict.h"
 
 namespace aspects {
 
@@ -32,13 +34,13 @@ class BranchAndPruneSteps {
   // Prune_c: contracts the box (removing no solution). Returns false when the box
   // holds no solution; `reason` then says why (recorded in the tree).
   virtual bool prune(Box& box, int32_t& reason) = 0;
-  // Prove_c: true when the box is a solution box; the step stores it (and its proof)
-  // and returns its output index.
-  virtual bool prove(const Box& box, int32_t& output_index) = 0;
-  // Stores an undecided box (width <= eps, not proved) and returns its output index.
-  virtual int32_t keep_undecided(const Box& box) = 0;
-  // Branch: the variable to bisect, or -1 when every variable is narrower than eps.
-  virtual int choose_split(const Box& box, int parent_split) = 0;
+  // Prove_c: the verdict on the box. On Verdict::Solution the step has stored it (and
+  // its proof) under `output_index`.
+  virtual Verdict prove(const Box& box, int32_t& output_index) = 0;
+  // Stores an undecided box (a leaf that Prove rejected for `why`); its output index.
+  virtual int32_t keep_undecided(const Box& box, Verdict why) = 0;
+  // Branch: the variable and the point to bisect at, or var = -1 for a leaf.
+  virtual SplitChoice choose_split(const Box& box, const SplitContext& ctx) = 0;
   // Told where a box was bisected, and where a subtree was deferred (for the
   // certificate).
   virtual void branched(int /*var*/, double /*at*/) {}
@@ -65,8 +67,5 @@ void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
                       SearchStats& stats, const std::function<void()>& on_progress = {},
                       int root_parent_split = -1, int defer_depth = -1,
                       std::vector<DeferredSubtree>* deferred = nullptr);
-
-// Splits at a double inside the interval (the midpoint, rounded): both halves non-empty.
-double split_point(const Interval& x);
 
 }  // namespace aspects

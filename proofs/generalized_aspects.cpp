@@ -8,35 +8,44 @@
 #include <mutex>
 #include <stdexcept>
 #include <cmath>
+#include <memory>
 #include <string>
 
+#include "checker_margins.h"
 #include "constraints.h"
+#include "contractor.h"
 #include "determinant_factors.h"
 #include "model_eval.h"
-#include "strong_regularity.h"
 
 namespace aspects {
 
 namespace {
 
-// Algorithm 1's steps for the NCSP (4): f = 0, det Fx ≠ 0, det Fq ≠ 0.
+// Algorithm 1's steps for the NCSP (4): f = 0, det Fx ≠ 0, det Fq ≠ 0, assembled from
+// the contractor (Prune), the solution-box prover (Prove) and the bisector (Branch).
+// This class adds what ties them to this problem: the certificate records, the output
+// boxes with their factor signs, the additional constraints and the diagnostics.
 class AspectsSearch : public BranchAndPruneSteps {
  public:
   AspectsSearch(const Model& m, const AspectsConfig& cfg, AspectsResult& out, TreeSink* sink)
-      : m_(m), cfg_(cfg), out_(out), sink_(sink), ev_(m), constraints_(m, ev_), n_(m.n()),
+      : m_(m), out_(out), sink_(sink), ev_(m), constraints_(m, ev_), contractor_(ev_),
+        prover_(ev_, constraints_, cfg.tau, cfg.max_newton_iterations),
+        bisector_(make_bisector(cfg.bisector, m, cfg.eps)), n_(m.n()),
         nv_(int(m.vars.size())) {
     for (const auto& f : out_.factors) factor_nodes_.push_back(f.node);
     factor_prog_ = m.dag.closure(factor_nodes_);
     for (int i = 0; i < n_; ++i) hints_.push_back("eq" + std::to_string(i));
-    domain_ = m.initial_box();
   }
 
-  // Prune: contraction (below), recorded for the certificate.
+  // Prune: contraction, recorded for the certificate with a gap, then the constraints.
   bool prune(Box& box, int32_t& reason) override {
     cell_ = box;
-    if (!contract(box, reason)) {
-      if (sink_)
-        sink_->discard(reason < n_ ? hints_[reason].c_str() : "hs");
+    Refutation r = contractor_.contract(box);
+    if (r) {
+      bool by_equation = r.kind == Refutation::Equation;
+      reason = by_equation ? r.equation : n_;
+      ++(by_equation ? out_.diagnostics.refuted_by_equation : out_.diagnostics.refuted_by_newton);
+      if (sink_) sink_->discard(by_equation ? hints_[r.equation].c_str() : "hs");
       return false;
     }
     // Leave a gap between the contraction and the recorded box, so that the closed
@@ -44,12 +53,9 @@ class AspectsSearch : public BranchAndPruneSteps {
     for (int v = 0; v < nv_; ++v) {
       double clo = cell_[v].lo_down(), chi = cell_[v].hi_up();
       double lo = box[v].lo_down(), hi = box[v].hi_up();
-      // Relative to the cell and to the magnitude of the bound: where the contraction
-      // is tight to rounding level (a solution within ulps of it), a gap of a few ulps
-      // would leave slabs no independent evaluation can refute.
-      double gap = 1e-9 * (chi - clo) + std::ldexp(1.0, -40) * std::max(1.0, std::fabs(lo));
-      double gap_hi = 1e-9 * (chi - clo) + std::ldexp(1.0, -40) * std::max(1.0, std::fabs(hi));
-      lo = lo - gap <= clo ? clo : std::nextafter(lo - gap, -INFINITY);
+      double gap_lo = margins::contraction_gap(chi - clo, lo);
+      double gap_hi = margins::contraction_gap(chi - clo, hi);
+      lo = lo - gap_lo <= clo ? clo : std::nextafter(lo - gap_lo, -INFINITY);
       hi = hi + gap_hi >= chi ? chi : std::nextafter(hi + gap_hi, INFINITY);
       box[v].set_hull(lo, hi);
       if ((lo > clo || hi < chi) && sink_) sink_->contraction(v, lo, hi);
@@ -61,31 +67,9 @@ class AspectsSearch : public BranchAndPruneSteps {
     if (pruned_truth_ == Truth::False) {
       if (sink_) sink_->discard(("c" + std::to_string(violated)).c_str());
       reason = n_ + 1 + violated;
+      ++out_.diagnostics.refuted_by_constraint;
       return false;
     }
-    return true;
-  }
-
-  // AC3-like fixpoint of HC4-Revise over the equations, then one Hansen–Sengupta
-  // contraction of the commands; the result is rounded outward to doubles.
-  bool contract(Box& box, int32_t& reason) {
-    for (int round = 0; round < 20; ++round) {
-      double before = total_width(box);
-      for (int i = 0; i < n_; ++i)
-        if (!ev_.hc4(i, box)) {
-          reason = i;
-          return false;
-        }
-      if (total_width(box) > 0.95 * before) break;
-    }
-    HsStatus s = hansen_sengupta(ev_, box, true, image_, ws_);
-    if (s == HsStatus::NoSolution) {
-      reason = n_;  // Hansen–Sengupta proved no zero of f(x,·) in [q] for any x
-      return false;
-    }
-    if (s == HsStatus::Ok)
-      for (int j = 0; j < n_; ++j) box[m_.command[j]] = image_[j];
-    for (auto& x : box) round_out_to_doubles(x);
     return true;
   }
 
@@ -97,109 +81,38 @@ class AspectsSearch : public BranchAndPruneSteps {
     if (sink_) sink_->deferred(task);
   }
 
-  // Prove: P1 by iteration (9), the coverage and domain rules, then P2 on the
-  // reported box ([x], [q(k+1)]).
-  bool prove(const Box& cell, int32_t& index) override {
-    last_kind_ = UndecidedKind::NoExistence;
-    if (!prove_existence(ev_, cell, cfg_.tau, cfg_.max_newton_iterations, proof_.existence, ws_))
-      return false;
-    auto& ex = proof_.existence;
-    // Coverage: uniqueness in [q̃] must cover the whole cell, or solutions of another
-    // branch in the cell would be lost. When the iterate shrank below the cell, try
-    // once more from the hull of both, so that the proved box contains the cell.
-    if (!covers_cell(ex, cell)) {
-      retry_ = cell;
-      for (int j = 0; j < n_; ++j) {
-        int v = m_.command[j];
-        mpfi_union(retry_[v].get(), cell[v].get(), ex.inflated[j].get());
-      }
-      if (!prove_existence(ev_, retry_, cfg_.tau, 2, ex, ws_) || !covers_cell(ex, cell))
-        return false;
-    }
-    for (int j = 0; j < n_; ++j) {
-      int v = m_.command[j];
-      // Domain: a command outside its range is not a configuration of the robot. A
-      // periodic command may cross its seam: f is 2π-periodic in it (checked by the
-      // parser), and the box then stands for its values modulo 2π.
-      if (!m_.vars[v].periodic && !domain_[v].contains(ex.image[j])) return false;
-    }
-    // The reported commands: the image widened by a small margin (still inside [q̃] and
-    // the domain), so that a checker whose enclosure of the image differs in the last
-    // bits (another evaluation order, a perturbed preconditioner) still finds it inside.
-    reported_ = cell;
-    for (int j = 0; j < n_; ++j) {
-      int v = m_.command[j];
-      const Interval& q = ex.inflated[j];
-      double margin = 1e-7 * (q.hi_up() - q.lo_down());
-      double lo = std::max(q.lo_down(), ex.image[j].lo_down() - margin);
-      double hi = std::min(q.hi_up(), ex.image[j].hi_up() + margin);
-      if (!m_.vars[v].periodic) {
-        lo = std::max(lo, domain_[v].lo_down());
-        hi = std::min(hi, domain_[v].hi_up());
-      }
-      ex.image[j].set_hull(lo, hi);
-      round_out_to_doubles(ex.image[j]);
-      reported_[v] = ex.image[j];
-    }
-    last_kind_ = UndecidedKind::Singular;
-    if (ev_.jacobian_x(reported_, J_) != EvalStatus::Defined ||
-        !strongly_regular(J_, &proof_.cx))
-      return false;
-    if (ev_.jacobian_q(reported_, J_) != EvalStatus::Defined ||
-        !strongly_regular(J_, &proof_.cq))
-      return false;
-    // Inner test: every additional constraint holds on the whole reported box.
-    if (constraints_.evaluate(reported_) != Truth::True) {
-      last_kind_ = UndecidedKind::Constraint;
-      return false;
-    }
+  Verdict prove(const Box& cell, int32_t& index) override {
+    Verdict v = prover_.prove(cell, reported_, proof_);
+    ++out_.diagnostics.attempts[int(v)];
+    if (v != Verdict::Solution) return v;
     index = store(reported_, true);
     if (sink_) sink_->solution(index, last_signs(), proof_);
-    return true;
+    return v;
   }
 
-  int32_t keep_undecided(const Box& box) override {
+  int32_t keep_undecided(const Box& box, Verdict why) override {
     int32_t index = store(box, false);
+    ++out_.diagnostics.undecided[int(why)];
     // `box` is the box prune() just returned: its constraint truth is known.
-    bool on_constraint = pruned_truth_ == Truth::Unknown;
-    out_.undecided_kind[index] = on_constraint ? UndecidedKind::Constraint : last_kind_;
+    bool on_constraint = pruned_truth_ == Truth::Unknown || why == Verdict::ConstraintBoundary;
+    bool p2 = why == Verdict::SingularFx || why == Verdict::SingularFq;
+    out_.undecided_kind[index] = on_constraint ? UndecidedKind::Constraint
+                                 : p2          ? UndecidedKind::Singular
+                                               : UndecidedKind::NoExistence;
     if (sink_) sink_->undecided(index, last_signs());
     return index;
   }
 
-  // Branch: round robin over the variables wider than eps.
-  int choose_split(const Box& box, int parent_split) override {
-    if (cfg_.bisection == Bisection::PoseFirst) {
-      // The widest pose variable wider than eps; the commands only once every pose
-      // variable is narrow (Prune's Hansen–Sengupta step usually locates q before).
-      int best = -1;
-      for (int group = 0; group < 2 && best < 0; ++group) {
-        double widest = cfg_.eps;
-        for (int v : group == 0 ? m_.pose : m_.command)
-          if (box[v].width_up() > widest) widest = box[v].width_up(), best = v;
-      }
-      return best;
-    }
-    for (int s = 1; s <= nv_; ++s) {
-      int v = (parent_split + s + nv_) % nv_;
-      if (parent_split < 0) v = s - 1;
-      if (box[v].width_up() > cfg_.eps) return v;
-    }
-    return -1;
+  SplitChoice choose_split(const Box& box, const SplitContext& ctx) override {
+    return bisector_->choose(box, ctx);
   }
 
  private:
-  bool covers_cell(const ExistenceProof& ex, const Box& cell) const {
-    for (int j = 0; j < n_; ++j)
-      if (!ex.inflated[j].contains(cell[m_.command[j]])) return false;
-    return true;
-  }
-
   // A sign is claimed only when the enclosure clears 0 by a margin, so that another
   // sound enclosure (the checker's) can confirm it.
   static int sign_with_margin(const Interval& d) {
     double lo = d.lo_down(), hi = d.hi_up();
-    double margin = 1e-9 * (hi - lo) + 1e-300;
+    double margin = margins::sign_clearance * (hi - lo) + margins::sign_clearance_abs;
     if (lo > margin) return 1;
     if (hi < -margin) return -1;
     return 0;
@@ -207,12 +120,6 @@ class AspectsSearch : public BranchAndPruneSteps {
 
   const int8_t* last_signs() const {
     return out_.signs.data() + out_.signs.size() - out_.factors.size();
-  }
-
-  static double total_width(const Box& b) {
-    double w = 0;
-    for (const auto& x : b) w += x.width_up();
-    return w;
   }
 
   int32_t store(const Box& box, bool certified) {
@@ -229,20 +136,18 @@ class AspectsSearch : public BranchAndPruneSteps {
   }
 
   const Model& m_;
-  const AspectsConfig& cfg_;
   AspectsResult& out_;
   TreeSink* sink_;
   ModelEvaluator ev_;
   ConstraintChecker constraints_;
+  EquationContractor contractor_;
+  SolutionBoxProver prover_;
+  std::unique_ptr<Bisector> bisector_;
   int n_, nv_;
   std::vector<int> factor_nodes_, factor_prog_;
-  Box domain_, reported_, retry_, cell_;
+  Box reported_, cell_;
   std::vector<std::string> hints_;
-  HsWorkspace ws_;
-  std::vector<Interval> image_;
-  IMatrix J_;
   SolutionProof proof_;
-  UndecidedKind last_kind_ = UndecidedKind::NoExistence;
   Truth pruned_truth_ = Truth::True;  // of the last box prune() kept
 };
 
@@ -300,6 +205,16 @@ class PartMerger {
 
 }  // namespace
 
+void SearchDiagnostics::add(const SearchDiagnostics& o) {
+  for (int k = 0; k < kVerdicts; ++k) {
+    attempts[k] += o.attempts[k];
+    undecided[k] += o.undecided[k];
+  }
+  refuted_by_equation += o.refuted_by_equation;
+  refuted_by_newton += o.refuted_by_newton;
+  refuted_by_constraint += o.refuted_by_constraint;
+}
+
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   auto t0 = std::chrono::steady_clock::now();
   AspectsResult out;
@@ -354,6 +269,8 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     }, tbb::simple_partitioner());
   });
   PartMerger(parts, out).graft(top, 0);
+  out.diagnostics.add(top.out.diagnostics);
+  for (const auto& part : parts) out.diagnostics.add(part.out.diagnostics);
   parts.clear();
   auto lap = [&, last = t0](const char* phase) mutable {
     auto now = std::chrono::steady_clock::now();

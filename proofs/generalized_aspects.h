@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "bisector.h"
 #include "box_store.h"
 #include "branch_and_prune.h"
 #include "certificate_sink.h"
@@ -25,13 +26,10 @@
 #include "model.h"
 #include "neighborhood_graph.h"
 #include "separation.h"
+#include "solution_box.h"
+#include "verdict.h"
 
 namespace aspects {
-
-enum class Bisection {
-  RoundRobin,  // the paper (4.2.3): variables in turn, at the midpoint
-  PoseFirst,   // the widest pose variable first, commands only when the pose is narrow
-};
 
 struct AspectsConfig {
   double eps = 0.1;
@@ -39,7 +37,7 @@ struct AspectsConfig {
   int max_newton_iterations = 8;
   bool keep_link_proofs = true;       // P3 data, for the certificate
   int threads = 1;
-  Bisection bisection = Bisection::RoundRobin;
+  BisectorKind bisector = BisectorKind::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
   std::function<void(const SearchStats&)> progress;
@@ -51,10 +49,12 @@ enum class UndecidedKind : uint8_t {
   Constraint = 2,   // on the boundary of an additional constraint (blue, paper 5.4)
 };
 
-// What a solution box's proofs used (recorded in the certificate).
-struct SolutionProof {
-  ExistenceProof existence;      // iteration (9) from the cell
-  std::vector<double> cx, cq;    // preconditioners of the P2 tests of Fx and Fq
+// Why the search decided what it did: for tuning and for the user, not for any claim.
+struct SearchDiagnostics {
+  VerdictCounts attempts{};   // Prove's verdict on every box that survived Prune
+  VerdictCounts undecided{};  // the verdict on each undecided leaf
+  long refuted_by_equation = 0, refuted_by_newton = 0, refuted_by_constraint = 0;
+  void add(const SearchDiagnostics& o);
 };
 
 struct AspectsResult {
@@ -71,6 +71,7 @@ struct AspectsResult {
   std::vector<int64_t> csnc_sizes;
   int filtered = 0;
   SeparationResult separation;
+  SearchDiagnostics diagnostics;
   long solutions = 0, undecided = 0, discarded = 0, processed = 0;
   double seconds = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;  // wall time per phase

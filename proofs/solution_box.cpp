@@ -1,0 +1,69 @@
+#include "solution_box.h"
+
+#include <algorithm>
+
+#include "checker_margins.h"
+#include "strong_regularity.h"
+
+namespace aspects {
+
+SolutionBoxProver::SolutionBoxProver(ModelEvaluator& ev, ConstraintChecker& constraints,
+                                     double tau, int max_iterations)
+    : ev_(ev), constraints_(constraints), m_(ev.model()), tau_(tau),
+      max_iterations_(max_iterations), domain_(ev.model().initial_box()) {}
+
+bool SolutionBoxProver::covers_cell(const ExistenceProof& ex, const Box& cell) const {
+  for (int j = 0; j < m_.n(); ++j)
+    if (!ex.inflated[j].contains(cell[m_.command[j]])) return false;
+  return true;
+}
+
+Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& proof) {
+  const int n = m_.n();
+  ExistenceProof& ex = proof.existence;
+  if (!prove_existence(ev_, cell, tau_, max_iterations_, ex, ws_)) return Verdict::NoExistence;
+  // Coverage: when the iterate shrank below the cell, try once more from the hull of
+  // both, so that the proved box contains the cell.
+  if (!covers_cell(ex, cell)) {
+    retry_ = cell;
+    for (int j = 0; j < n; ++j) {
+      int v = m_.command[j];
+      mpfi_union(retry_[v].get(), cell[v].get(), ex.inflated[j].get());
+    }
+    if (!prove_existence(ev_, retry_, tau_, 2, ex, ws_)) return Verdict::NoExistence;
+    if (!covers_cell(ex, cell)) return Verdict::NotCovering;
+  }
+  // Domain: a command outside its range is not a configuration of the robot. A periodic
+  // command may cross its seam: f is 2π-periodic in it (checked by the parser), and the
+  // box then stands for its values modulo 2π.
+  for (int j = 0; j < n; ++j) {
+    int v = m_.command[j];
+    if (!m_.vars[v].periodic && !domain_[v].contains(ex.image[j])) return Verdict::OutsideDomain;
+  }
+  // The reported commands: the image widened by a margin for the checker, still inside
+  // [q~] and the domain.
+  reported = cell;
+  for (int j = 0; j < n; ++j) {
+    int v = m_.command[j];
+    const Interval& q = ex.inflated[j];
+    double margin = margins::image_widening * (q.hi_up() - q.lo_down());
+    double lo = std::max(q.lo_down(), ex.image[j].lo_down() - margin);
+    double hi = std::min(q.hi_up(), ex.image[j].hi_up() + margin);
+    if (!m_.vars[v].periodic) {
+      lo = std::max(lo, domain_[v].lo_down());
+      hi = std::min(hi, domain_[v].hi_up());
+    }
+    ex.image[j].set_hull(lo, hi);
+    round_out_to_doubles(ex.image[j]);
+    reported[v] = ex.image[j];
+  }
+  // P2 on the reported box, not on the cell: the iterate may have moved.
+  if (ev_.jacobian_x(reported, J_) != EvalStatus::Defined || !strongly_regular(J_, &proof.cx))
+    return Verdict::SingularFx;
+  if (ev_.jacobian_q(reported, J_) != EvalStatus::Defined || !strongly_regular(J_, &proof.cq))
+    return Verdict::SingularFq;
+  if (constraints_.evaluate(reported) != Truth::True) return Verdict::ConstraintBoundary;
+  return Verdict::Solution;
+}
+
+}  // namespace aspects

@@ -1,0 +1,51 @@
+// Prove of Algorithm 1 (paper 4.2.1): is a cell of the search a solution box?
+//
+// prove() returns Verdict::Solution only when all of these hold for the reported box
+// B = ([x], [q]) it writes, [x] the cell's pose:
+//  - P1: for every x in [x] there is exactly one q in [q~] with f(x, q) = 0, and it lies
+//    in [q] ⊆ [q~] (parametric Hansen–Sengupta, iteration (9));
+//  - coverage: the cell's commands lie in [q~], so every solution of the cell is in B
+//    (no branch of the cell is lost: the separation bound relies on it);
+//  - domain: [q] lies in the declared domain of every non-periodic command;
+//  - P2: Fx and Fq are strongly regular on B;
+//  - inner test: every additional constraint is certainly true on B.
+// Otherwise it returns the first property that failed, in that order. The recorded
+// numbers (the proof) are widened by the margins of checker_margins.h.
+#pragma once
+
+#include <vector>
+
+#include "constraints.h"
+#include "hansen_sengupta.h"
+#include "model_eval.h"
+#include "verdict.h"
+
+namespace aspects {
+
+// What a solution box's proofs used (recorded in the certificate).
+struct SolutionProof {
+  ExistenceProof existence;    // iteration (9) from the cell
+  std::vector<double> cx, cq;  // preconditioners of the P2 tests of Fx and Fq
+};
+
+class SolutionBoxProver {
+ public:
+  SolutionBoxProver(ModelEvaluator& ev, ConstraintChecker& constraints, double tau,
+                    int max_iterations);
+  // On Verdict::Solution, `reported` is B and `proof` its certificate data.
+  Verdict prove(const Box& cell, Box& reported, SolutionProof& proof);
+
+ private:
+  bool covers_cell(const ExistenceProof& ex, const Box& cell) const;
+
+  ModelEvaluator& ev_;
+  ConstraintChecker& constraints_;
+  const Model& m_;
+  double tau_;
+  int max_iterations_;
+  Box domain_, retry_;
+  HsWorkspace ws_;
+  IMatrix J_;
+};
+
+}  // namespace aspects
