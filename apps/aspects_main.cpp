@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "aspects_version.h"
 #include "model.h"
 #include "model_info.h"
 #include "solve_command.h"
@@ -13,6 +14,10 @@ using namespace aspects;
 int main(int argc, char** argv) {
   CLI::App app{"Certified generalized aspects of parallel robots (branch and prune)", "aspects"};
   app.require_subcommand(1);
+  // CLI11 handles it like --help: given to the main command it prints and exits 0, whatever
+  // else is on the line; after a subcommand it is an unknown option of that subcommand.
+  app.set_version_flag("--version", std::string("aspects ") + ASPECTS_VERSION +
+                                        (*ASPECTS_GIT_COMMIT ? " (git " ASPECTS_GIT_COMMIT ")" : ""));
 
   std::string info_model;
   auto* info = app.add_subcommand("info", "Print a robot model: variables, equations, Jacobian patterns");
@@ -40,6 +45,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "aspects: " << e.what() << "\n(run 'aspects --help' for usage)\n";

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "aspects_version.h"
 #include "atomic_file.h"
 #include "certificate_writer.h"
 #include "generalized_aspects.h"
@@ -70,6 +71,8 @@ void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& 
 
 nlohmann::json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r) {
   nlohmann::json j;
+  j["version"] = ASPECTS_VERSION;
+  j["git_commit"] = *ASPECTS_GIT_COMMIT ? nlohmann::json(ASPECTS_GIT_COMMIT) : nlohmann::json(nullptr);
   j["robot"] = m.name;
   j["model"] = o.model_path.empty() ? std::string("(embedded default)") : o.model_path;
   j["eps"] = o.eps;

@@ -7,9 +7,11 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "aspects_version.h"
+
 namespace aspects {
 
-const char* const kToolVersion = "0.1.0";
+const char* const kToolVersion = ASPECTS_VERSION_FULL;  // one token: `tool aspects <version>`
 
 namespace {
 std::string sha256_hex(const std::string& data) {

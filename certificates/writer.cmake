@@ -1,5 +1,6 @@
 # Certificate writer (engine side). The checker below shares no code with it.
 find_package(OpenSSL REQUIRED)
 add_library(aspects_cert_writer STATIC ${PROJECT_SOURCE_DIR}/certificates/certificate_writer.cpp)
-target_include_directories(aspects_cert_writer PUBLIC ${PROJECT_SOURCE_DIR}/certificates)
+target_include_directories(aspects_cert_writer PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/certificates>)
 target_link_libraries(aspects_cert_writer PUBLIC aspects_engine OpenSSL::Crypto)
+aspects_use_version(aspects_cert_writer)
