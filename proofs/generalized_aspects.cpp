@@ -28,7 +28,6 @@ class AspectsSearch : public BranchAndPruneSteps {
     for (const auto& f : out_.factors) factor_nodes_.push_back(f.node);
     factor_prog_ = m.dag.closure(factor_nodes_);
     for (int i = 0; i < n_; ++i) hints_.push_back("eq" + std::to_string(i));
-    domain_ = m.initial_box();
   }
 
   // Prune: contraction (below), recorded for the certificate.
@@ -117,11 +116,21 @@ class AspectsSearch : public BranchAndPruneSteps {
         return false;
     }
     for (int j = 0; j < n_; ++j) {
-      int v = m_.command[j];
+      const Variable& var = m_.vars[m_.command[j]];
       // Domain: a command outside its range is not a configuration of the robot. A
       // periodic command may cross its seam: f is 2π-periodic in it (checked by the
-      // parser), and the box then stands for its values modulo 2π.
-      if (!m_.vars[v].periodic && !domain_[v].contains(ex.image[j])) return false;
+      // parser), and the box then stands for its values modulo 2π. The inner enclosure
+      // of the bounds, as the checker demands (certificates/FORMAT.md).
+      if (var.periodic) continue;
+      if (ex.image[j].lo_down() < var.inner_lo || ex.image[j].hi_up() > var.inner_hi)
+        return false;
+    }
+    // A box whose pose misses the declared domain holds no configuration of the robot:
+    // it may not count for the bound (possible only within rounding of the root cell).
+    for (int v : m_.pose) {
+      const Variable& var = m_.vars[v];
+      if (var.periodic) continue;
+      if (cell[v].hi_up() < var.inner_lo || cell[v].lo_down() > var.inner_hi) return false;
     }
     // The reported commands: the image widened by a small margin (still inside [q̃] and
     // the domain), so that a checker whose enclosure of the image differs in the last
@@ -134,8 +143,8 @@ class AspectsSearch : public BranchAndPruneSteps {
       double lo = std::max(q.lo_down(), ex.image[j].lo_down() - margin);
       double hi = std::min(q.hi_up(), ex.image[j].hi_up() + margin);
       if (!m_.vars[v].periodic) {
-        lo = std::max(lo, domain_[v].lo_down());
-        hi = std::min(hi, domain_[v].hi_up());
+        lo = std::max(lo, m_.vars[v].inner_lo);
+        hi = std::min(hi, m_.vars[v].inner_hi);
       }
       ex.image[j].set_hull(lo, hi);
       round_out_to_doubles(ex.image[j]);
@@ -236,7 +245,7 @@ class AspectsSearch : public BranchAndPruneSteps {
   ConstraintChecker constraints_;
   int n_, nv_;
   std::vector<int> factor_nodes_, factor_prog_;
-  Box domain_, reported_, retry_, cell_;
+  Box reported_, retry_, cell_;
   std::vector<std::string> hints_;
   HsWorkspace ws_;
   std::vector<Interval> image_;

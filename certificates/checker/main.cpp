@@ -60,6 +60,21 @@ struct Checker {
     return strict ? a > 0 && b < 0 : a >= 0 && b <= 0;
   }
 
+  // hi - lo >= 2π, proved: a periodic root cell then covers every angle (a shorter one,
+  // declared with a rounded pi, would leave a gap that splits an aspect at the seam).
+  bool spans_period(double lo, double hi) {
+    Ival w;
+    mpfi_set_d(w, hi);
+    mpfi_sub_d(w, w, lo);
+    return mpfr_cmp(w.L(), ev->two_pi.R()) >= 0;
+  }
+  // A non-periodic variable v of `box` meets the inner enclosure of its declared domain,
+  // so the box holds configurations of that domain (a periodic one always does, mod 2π).
+  bool meets_domain(const double* box, int v) const {
+    if (periodic[v]) return true;
+    return mpfr_cmp_d(dlo[v].R(), box[2 * v + 1]) <= 0 && mpfr_cmp_d(dhi[v].L(), box[2 * v]) >= 0;
+  }
+
   std::string show(const std::vector<double>& b) const {  // a box, for messages
     std::string s;
     char buf[64];
@@ -124,14 +139,13 @@ void Checker::header() {
   if (!(parse_real(rd.expect({"eps"}, 1)[1], rec()) > 0)) malformed(rec(), "eps must be > 0");
   root = reals(rd.expect({"domain"}, 2 * size_t(nv)), 1, 2 * nv, true);
   for (int v = 0; v < nv; ++v) {
-    double lo = root[2 * v], hi = root[2 * v + 1];
-    if (mpfr_cmp_d(dlo[v].L(), lo) < 0 || mpfr_cmp_d(dhi[v].R(), hi) > 0)
-      reject("root cell does not contain the declared domain of '" + m.vars[v].name + "'");
-    // A periodic root cell may exceed the declared bounds by 1e-9 (a tolerance only).
-    mpfr_sub_d(w.L(), dlo[v].L(), 1e-9, MPFR_RNDD);
-    mpfr_add_d(w.R(), dhi[v].R(), 1e-9, MPFR_RNDU);
-    if (periodic[v] && (mpfr_cmp_d(w.L(), lo) > 0 || mpfr_cmp_d(w.R(), hi) < 0))
-      reject("root cell exceeds the period of '" + m.vars[v].name + "'");
+    // The root cell is the declared domain rounded outward to doubles, nothing more: it
+    // covers every configuration, and it cannot hold boxes of another (wider) domain.
+    if (root[2 * v] != dlo[v].lo() || root[2 * v + 1] != dhi[v].hi())
+      reject("root cell is not the declared domain of '" + m.vars[v].name +
+             "' rounded outward to doubles");
+    if (periodic[v] && !spans_period(root[2 * v], root[2 * v + 1]))
+      reject("root cell of periodic '" + m.vars[v].name + "' does not provably span 2*pi");
   }
   int64_t pp = I(rd.expect({"factors"}, 1)[1]);
   if (pp < 0 || pp > 20) reject("number of factors out of range 0..20");
@@ -198,6 +212,11 @@ void Checker::solution_leaf(const Fields& f, const std::vector<double>& cell) {
       reject("IMAGE leaves the declared domain of " + m.vars[v].name);
     B[2 * v] = img[2 * j], B[2 * v + 1] = img[2 * j + 1];
   }
+  // The box must hold configurations of the declared domain: its commands lie in it (just
+  // above), each pose variable must meet it. A box outside it may not count for the bound.
+  for (int v : m.pose)
+    if (!meets_domain(B.data(), v))
+      reject("solution box misses the declared domain of " + m.vars[v].name + show(B));
   pr->load(cell.data());
   if (const char* why = pr->newton(Q.data(), C.data())) reject(std::string("P1: ") + why);
   for (int j = 0; j < n; ++j) {
