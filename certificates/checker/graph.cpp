@@ -83,14 +83,14 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
   return out;
 }
 
-long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M) {
+long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, uint32_t use) {
   const size_t N = R.size();
-  const uint32_t full = R.p >= 32 ? ~0u : (1u << R.p) - 1;
-  // Only the sign vectors s of solution boxes with every sign verified can count (bit i of
-  // s set: factor i positive): at most N classes instead of 2^p.
+  const uint32_t full = use;
+  // Only the sign vectors s of solution boxes with every used sign verified can count (bit
+  // i of s set: factor i positive): at most N classes instead of 2^p.
   std::vector<uint32_t> classes;
   for (size_t b = 0; b < N; ++b)
-    if (R.solution[b] && (R.pos[b] | R.neg[b]) == full) classes.push_back(R.pos[b]);
+    if (R.solution[b] && ((R.pos[b] | R.neg[b]) & full) == full) classes.push_back(R.pos[b] & full);
   std::sort(classes.begin(), classes.end());
   classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
   UnionFind uf;
@@ -103,7 +103,7 @@ long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M) {
       if (compat[e.first] && compat[e.second]) uf.unite(e.first, e.second);
     std::fill(counted.begin(), counted.end(), 0);
     for (size_t b = 0; b < N; ++b) {
-      if (!R.solution[b] || R.pos[b] != s || R.neg[b] != (~s & full)) continue;
+      if (!R.solution[b] || (R.pos[b] & full) != s || (R.neg[b] & full) != (~s & full)) continue;
       int r = uf.find(int(b));
       if (!counted[r]) counted[r] = 1, ++total;
     }
