@@ -68,17 +68,20 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
     for (size_t j = i + 1; j < items.size() && items[j].lo <= items[i].hi; ++j) {
       const Item &p = items[i], &q = items[j];
       if (p.id == q.id || (p.k && q.k)) continue;
-      // Every other variable v: p_v meets q_v + 2πk for some k (independently per variable).
+      // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
+      // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
+      const int a = std::min(p.id, q.id);
+      const int b = std::max(p.id, q.id);
       bool meet = true;
       for (int v = 0; v < nv && meet; ++v) {
-        const double* a = R.box(p.id) + 2 * v;
-        meet = v == d;
+        const double* x = R.box(a) + 2 * v;
+        meet = false;
         for (int k = 0; k < 3 && !meet; ++k) {
-          const std::array<double, 2>& s = S[(size_t(q.id) * nv + v) * 3 + k];
-          meet = a[0] <= s[1] && s[0] <= a[1];
+          const std::array<double, 2>& s = S[(size_t(b) * nv + v) * 3 + k];
+          meet = x[0] <= s[1] && s[0] <= x[1];
         }
       }
-      if (meet) out.emplace_back(std::min(p.id, q.id), std::max(p.id, q.id));
+      if (meet) out.emplace_back(a, b);
     }
   return out;
 }
