@@ -16,13 +16,15 @@ using namespace aspects;
 
 namespace {
 
+using Ends = std::vector<std::array<double, 2>>;
+
 // Shifted ends of every box: E[(b·nv + v)·3 + k + 1] = {⌊b.lo_v + 2πk⌋, ⌈b.hi_v + 2πk⌉}.
-std::vector<std::array<double, 2>> shifted_ends(const BoxStore& R, const std::vector<bool>& periodic) {
+Ends shifted_ends(const BoxStore& R, const std::vector<bool>& periodic) {
   const int nv = R.nv();
   Interval two_pi, t;
   mpfi_const_pi(two_pi.get());
   mpfi_mul_ui(two_pi.get(), two_pi.get(), 2);
-  std::vector<std::array<double, 2>> E(size_t(R.size()) * nv * 3);
+  Ends E(size_t(R.size()) * nv * 3);
   for (int b = 0; b < R.size(); ++b)
     for (int v = 0; v < nv; ++v)
       for (int k = -1; k <= 1; ++k) {
@@ -39,7 +41,7 @@ std::vector<std::array<double, 2>> shifted_ends(const BoxStore& R, const std::ve
   return E;
 }
 
-bool meets(const BoxStore& R, const std::vector<std::array<double, 2>>& E, int a, int b, int v, int k) {
+bool meets(const BoxStore& R, const Ends& E, int a, int b, int v, int k) {
   const std::array<double, 2>& e = E[(size_t(b) * R.nv() + v) * 3 + k + 1];
   return R.lo(a, v) <= e[1] && e[0] <= R.hi(a, v);
 }

@@ -535,7 +535,8 @@ int main(int argc, char** argv) {
     }
   }
   if (usage || path.empty()) {
-    std::fprintf(stderr, "usage: check_cert [--quiet] [--json] [--trust-factors] FILE.cert (see --help)\n");
+    std::fprintf(stderr, "usage: check_cert [--quiet] [--json] [--trust-factors] FILE.cert"
+                         " (see --help)\n");
     return kMalformed;
   }
   FILE* f = std::fopen(path.c_str(), "rb");

@@ -345,8 +345,8 @@ def mutations_real(base):
         # Model edits keeping the tree (re-hashed). Constants: a wider bar length moves
         # the solutions out of the recorded boxes (a refutation fails).
         # Issue 15: this forgery printed VERIFIED lower_bound=4 (the truth is 2).
-        ("issue15_forgery_x_narrowed", lambda c: model_edit(c, "pose    x", "pose    x in [-2, -0.5]"),
-         (1, "root cell")),
+        ("issue15_forgery_x_narrowed",
+         lambda c: model_edit(c, "pose    x", "pose    x in [-2, -0.5]"), (1, "root cell")),
         ("model_constant_a_changed", lambda c: model_edit(c, "constant a", "constant a = 0.5"), 1),
         # The claim is still true of this model (l = 1 + 1e-15: 4 aspects) and every proof
         # keeps its margin: accepted.
@@ -355,12 +355,14 @@ def mutations_real(base):
         # A constraint true on the whole domain: every claim still holds, accepted.
         ("model_constraint_added_always_true", lambda c: model_add(c, "constraint x >= -3"), 0),
         # A constraint false on half of the solution boxes: the inner test fails.
-        ("model_constraint_added_cuts", lambda c: model_add(c, "constraint x >= 0"), (1, "inner test")),
+        ("model_constraint_added_cuts", lambda c: model_add(c, "constraint x >= 0"),
+         (1, "inner test")),
         # A factor in the model that the certificate does not use: the bound rests on detFx
         # and detFq only, so it is still true; accepted.
         ("model_factor_added_unused", lambda c: model_add(c, "factor x - 0.5"), 0),
         # The robot's name cannot forge the verdict line: quoted, after the real fields.
-        ("model_name_forging_verdict", lambda c: model_edit(c, "robot", "robot PRRP csncs=9 lower_bound=99"),
+        ("model_name_forging_verdict",
+         lambda c: model_edit(c, "robot", "robot PRRP csncs=9 lower_bound=99"),
          (0, 'lower_bound=4 checked_lower_bound=4 robot="PRRPcsncs=9lower_bound=99"')),
     ]
 
@@ -446,7 +448,8 @@ def main():
         for robot, eps, muts in (("prrp", "0.1", mutations_real(None)), ("rprpr", "0.2", [
                                      # Issue 15: VERIFIED lower_bound=2 before (the truth is 1).
                                      ("issue15_forgery_x2_narrowed",
-                                      lambda c: model_edit(c, "pose    x2", "pose    x2 in [0.5, 20]"),
+                                      lambda c: model_edit(c, "pose    x2",
+                                                           "pose    x2 in [0.5, 20]"),
                                       (1, "root cell"))]),
                                  ("rrrrr_joint_limit", "0.5", mutations_constrained())):
             subprocess.run([aspects, "solve", os.path.join(robots, robot + ".robot"), "--eps", eps,
@@ -515,7 +518,8 @@ def verdict_cases(check, aspects, robots, work):
     ]
     failed = 0
     for name, args, want, word in cases:
-        r = subprocess.run([check, "--quiet"] + args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+        r = subprocess.run([check, "--quiet"] + args, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT)
         msg = r.stdout.decode(errors="replace").strip()
         ok = r.returncode == want and word in msg
         if args[0] == "--json" and ok:
