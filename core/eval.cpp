@@ -167,23 +167,32 @@ EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
       case Op::Exp: mpfi_exp(r.get(), a->get()); break;
       case Op::Abs: mpfi_abs(r.get(), a->get()); break;
       case Op::Atan: mpfi_atan(r.get(), a->get()); break;
+      // sign and step arise only as derivatives of abs, min and max. Where the kink may
+      // lie in the box the classical derivative may not exist there: Partial, so that no
+      // proof (P1, P2, P3, a factor's sign) rests on a generalized derivative, the rule
+      // check_cert applies too (robots/README.md). The value stays a sound hull.
       case Op::Sign: {
         int s = certain_sign(*a);
-        if (s != 0)
+        if (s != 0) {
           mpfi_set_si(r.get(), s);
-        else if (mpfr_zero_p(L(*a)) && mpfr_zero_p(R(*a)))
+          break;
+        }
+        partial();
+        if (mpfr_zero_p(L(*a)) && mpfr_zero_p(R(*a)))
           mpfi_set_si(r.get(), 0);
         else
           set_unit(r);
         break;
       }
       case Op::Step:
-        if (mpfr_less_p(R(*a), L(*b)))
+        if (mpfr_less_p(R(*a), L(*b))) {
           mpfi_set_si(r.get(), 1);
-        else if (mpfr_greater_p(L(*a), R(*b)))
+        } else if (mpfr_greater_p(L(*a), R(*b))) {
           mpfi_set_si(r.get(), 0);
-        else
+        } else {
+          partial();
           mpfi_interv_si(r.get(), 0, 1);
+        }
         break;
     }
     if (mpfi_nan_p(r.get())) {

@@ -34,6 +34,10 @@ struct Variable {
   std::string name;
   VarKind kind;
   Interval domain;  // outward enclosure of the declared domain
+  // Inner enclosure of the declared bounds, rounded inward to doubles: a box whose
+  // variable reaches [inner_lo, inner_hi] certainly meets the declared domain. (May be
+  // reversed for a degenerate domain whose bound is not a double.)
+  double inner_lo = 0, inner_hi = 0;
   bool periodic = false;
   int line = 0;
 };

@@ -270,6 +270,8 @@ class Parser {
     (void)lo_tok;
     (void)hi_tok;
     mpfi_interv_fr(v.domain.get(), &lo.get()->left, &hi.get()->right);
+    v.inner_lo = mpfr_get_d(&lo.get()->right, MPFR_RNDU);
+    v.inner_hi = mpfr_get_d(&hi.get()->left, MPFR_RNDD);
     if (is_word("periodic")) {
       const Token& per = next();
       // One period exactly: hi - lo must be able to equal 2*pi.

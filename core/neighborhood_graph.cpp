@@ -40,13 +40,35 @@ std::vector<double> subtree_hulls(const std::vector<SearchNode>& tree, const Box
   return h;
 }
 
+// The certificate's definition of M (certificates/FORMAT.md, "claim lower-bound"): a and b
+// are neighbours when, for every v, a_v meets b_v + 2πk_v with the shifted ends of b
+// rounded outward to doubles. The checker recomputes M with exactly this test.
+bool meets_shifted(const BoxStore& R, int a, int b, const std::vector<int>& k,
+                   const Interval& two_pi, Interval& t) {
+  for (int v = 0; v < R.nv(); ++v) {
+    double lo = R.lo(b, v), hi = R.hi(b, v);
+    if (k[v] != 0) {
+      mpfi_mul_si(t.get(), two_pi.get(), k[v]);
+      mpfi_add_d(t.get(), t.get(), lo);
+      lo = t.lo_down();
+      mpfi_mul_si(t.get(), two_pi.get(), k[v]);
+      mpfi_add_d(t.get(), t.get(), hi);
+      hi = t.hi_up();
+    }
+    if (R.lo(a, v) > hi || lo > R.hi(a, v)) return false;
+  }
+  return true;
+}
+
 struct Query {
   const std::vector<SearchNode>& tree;
   const BoxStore& R;
   const std::vector<double>& hull;
-  std::vector<double> lo, hi;  // query box (shifted), outward
+  std::vector<double> lo, hi;  // query box (shifted, widened): a filter only
   int self;
-  uint32_t code;
+  std::vector<int> back;       // the shift of b, −k
+  const Interval& two_pi;
+  Interval t;
   std::vector<NeighborPair>* out;
 
   void visit(int32_t node) {
@@ -57,7 +79,8 @@ struct Query {
       if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
     if (s.split_var < 0) {
       if (s.leaf < 0 || s.leaf <= self) return;
-      out->push_back({self, s.leaf, code});
+      if (meets_shifted(R, self, s.leaf, back, two_pi, t))
+        out->push_back({self, s.leaf, pack_shift(back)});
       return;
     }
     visit(s.left);
@@ -68,7 +91,7 @@ struct Query {
 }  // namespace
 
 std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
-                                         const std::vector<bool>& periodic, const Box& domain) {
+                                         const std::vector<bool>& periodic) {
   const int nv = R.nv();
   std::vector<int> pvars;
   for (int v = 0; v < nv; ++v)
@@ -79,40 +102,38 @@ std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, co
 
   std::vector<NeighborPair> out;
   std::vector<double> hull = subtree_hulls(tree, R);
-  Query q{tree, R, hull, std::vector<double>(nv), std::vector<double>(nv), 0, 0, &out};
+  Query q{tree, R, hull, std::vector<double>(nv), std::vector<double>(nv), 0,
+          std::vector<int>(nv, 0), two_pi, Interval(), &out};
   int combos = 1;
   for (size_t i = 0; i < pvars.size(); ++i) combos *= 3;
   std::vector<int> k(nv, 0);
   for (int id = 0; id < R.size(); ++id) {
     for (int c = 0; c < combos; ++c) {
       int code = c;
-      bool useful = true;
       std::fill(k.begin(), k.end(), 0);
       for (int v : pvars) {
         k[v] = code % 3 - 1;
         code /= 3;
       }
-      for (int v = 0; v < nv && useful; ++v) {
+      // Query box a + 2πk meets b  ⇔  b − 2πk meets a: b is tested with shift −k. The
+      // query only filters (widened by far more than any rounding); meets_shifted decides.
+      // No shifted query is skipped: output boxes may leave the domain (a periodic
+      // command's image crosses its seam), so one that misses it may still meet a box.
+      for (int v = 0; v < nv; ++v) {
+        q.back[v] = -k[v];
         if (k[v] == 0) {
           q.lo[v] = R.lo(id, v);
           q.hi[v] = R.hi(id, v);
           continue;
         }
-        // Query box a + 2πk meets b  ⇔  b − 2πk meets a: record −k for b.
         mpfi_mul_si(t.get(), two_pi.get(), k[v]);
         mpfi_add_d(t.get(), t.get(), R.lo(id, v));
-        // One ulp wider than the certificate's definition of M: M may only gain pairs.
-        q.lo[v] = std::nextafter(t.lo_down(), -INFINITY);
+        q.lo[v] = t.lo_down() - 1e-9 * (1 + std::fabs(t.lo_down()));
         mpfi_mul_si(t.get(), two_pi.get(), k[v]);
         mpfi_add_d(t.get(), t.get(), R.hi(id, v));
-        q.hi[v] = std::nextafter(t.hi_up(), INFINITY);
-        if (q.hi[v] < domain[v].lo_down() || q.lo[v] > domain[v].hi_up()) useful = false;
+        q.hi[v] = t.hi_up() + 1e-9 * (1 + std::fabs(t.hi_up()));
       }
-      if (!useful) continue;
-      std::vector<int> neg(nv);
-      for (int v = 0; v < nv; ++v) neg[v] = -k[v];
       q.self = id;
-      q.code = pack_shift(neg);
       q.visit(0);
     }
   }

@@ -1,9 +1,9 @@
 // Neighbourhood graph (R, M) of paper 4.3.1: two output boxes are neighbours when they
-// may share a point, modulo 2π on periodic variables. M may contain
-// pairs that only touch up to rounding. The search uses the hulls of the output boxes
-// below each tree node (a bounding-volume hierarchy over the bisection tree).
-// Extra: extra pairs in M are sound (they can only merge
-// components of the separation, lowering the bound), missing pairs would not be.
+// may share a point, modulo 2π on periodic variables. M is exactly the graph that
+// certificates/FORMAT.md defines ("claim lower-bound"; shifted ends rounded outward), so
+// the solver's bound is the one check_cert recomputes: missing pairs would be unsound,
+// extra ones would make the two bounds differ. The search uses the hulls of the output
+// boxes below each tree node (a bounding-volume hierarchy over the bisection tree).
 #pragma once
 
 #include <cstdint>
@@ -25,6 +25,6 @@ struct NeighborPair {
 uint32_t pack_shift(const std::vector<int>& k);
 
 std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
-                                         const std::vector<bool>& periodic, const Box& domain);
+                                         const std::vector<bool>& periodic);
 
 }  // namespace aspects

@@ -6,7 +6,8 @@
 #   table1.md, table1.csv   the paper's Table 1 beside our numbers
 #   figures/*.png           Figures 2, 5, 6, 7 and 8-11 (those whose runs exist)
 #   archive/                every certificate, compressed, and archive/MANIFEST
-#   runs/KEY/               summary.json, model.robot, solve.log, check.log, record.txt
+#   runs/KEY/               summary.json, model.robot, solve.log, check.json (check_cert
+#                           --json: the certified bound), check.log, record.txt
 #   run_info.txt            mode, command line, commit, build, total time
 #
 # Everything is written in a temporary directory next to OUT and renamed at the end, so
@@ -254,12 +255,16 @@ for key in "${KEYS[@]}"; do
   tool=$(sed -n '2{s/^tool //;p;q}' "$cert")
   prec=$(sed -n 's/^precision \([0-9]*\)$/\1/p;/^tree$/q' "$cert" | head -n 1)
   t0=$(now); crc=0
-  run_child "${TIMEOUT_CMD[@]}" "$CHECK" "$cert" > "$rd/check.log" 2>&1 || crc=$?
+  # --json: the table takes the certified bound from check_cert's verdict (check.json),
+  # never from the solver's summary.json.
+  run_child "${TIMEOUT_CMD[@]}" "$CHECK" --json "$cert" > "$rd/check.json" 2> "$rd/check.log" || crc=$?
   t1=$(now); cwall=$(elapsed "$t0" "$t1")
-  check_line=$(grep -m 1 -E '^check_cert: (VERIFIED|REJECTED)' "$rd/check.log" || true)
+  check_line=$(head -n 1 "$rd/check.json")
+  verdict=$("$PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["verdict"])' \
+            "$rd/check.json" 2>/dev/null || true)
   { echo "check_wall=$cwall"; echo "check_exit=$crc"; echo "check_line=$check_line"
     echo "cert_bytes=$cert_bytes"; echo "tool=$tool"; echo "precision_bits=$prec"; } >> "$rec"
-  if [ $crc -eq 0 ] && [[ "$check_line" == "check_cert: VERIFIED"* ]]; then
+  if [ $crc -eq 0 ] && [ "$verdict" = VERIFIED ]; then
     check=VERIFIED
     log "[$i/$N] $name certificate VERIFIED in ${cwall} s"
     echo "status=ok" >> "$rec"

@@ -286,7 +286,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // 4.3.1: neighbourhood graph over R = S ∪ U.
   std::vector<bool> periodic;
   for (const auto& v : model.vars) periodic.push_back(v.periodic);
-  out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic, model.initial_box());
+  out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic);
 
   lap("neighbourhood graph");
   // 4.3.2: certified links between solution boxes (P3), in blocks processed in

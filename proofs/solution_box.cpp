@@ -10,7 +10,7 @@ namespace aspects {
 SolutionBoxProver::SolutionBoxProver(ModelEvaluator& ev, ConstraintChecker& constraints,
                                      double tau, int max_iterations)
     : ev_(ev), constraints_(constraints), m_(ev.model()), tau_(tau),
-      max_iterations_(max_iterations), domain_(ev.model().initial_box()) {}
+      max_iterations_(max_iterations) {}
 
 bool SolutionBoxProver::covers_cell(const ExistenceProof& ex, const Box& cell) const {
   for (int j = 0; j < m_.n(); ++j)
@@ -35,10 +35,21 @@ Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& 
   }
   // Domain: a command outside its range is not a configuration of the robot. A periodic
   // command may cross its seam: f is 2π-periodic in it (checked by the parser), and the
-  // box then stands for its values modulo 2π.
+  // box then stands for its values modulo 2π. The inner enclosure of the bounds, as the
+  // checker demands (certificates/FORMAT.md).
   for (int j = 0; j < n; ++j) {
-    int v = m_.command[j];
-    if (!m_.vars[v].periodic && !domain_[v].contains(ex.image[j])) return Verdict::OutsideDomain;
+    const Variable& var = m_.vars[m_.command[j]];
+    if (var.periodic) continue;
+    if (ex.image[j].lo_down() < var.inner_lo || ex.image[j].hi_up() > var.inner_hi)
+      return Verdict::OutsideDomain;
+  }
+  // A box whose pose misses the declared domain holds no configuration of the robot: it
+  // may not count for the bound (possible only within rounding of the root cell).
+  for (int v : m_.pose) {
+    const Variable& var = m_.vars[v];
+    if (var.periodic) continue;
+    if (cell[v].hi_up() < var.inner_lo || cell[v].lo_down() > var.inner_hi)
+      return Verdict::OutsideDomain;
   }
   // The reported commands: the image widened by a margin for the checker, still inside
   // [q~] and the domain.
@@ -50,8 +61,8 @@ Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& 
     double lo = std::max(q.lo_down(), ex.image[j].lo_down() - margin);
     double hi = std::min(q.hi_up(), ex.image[j].hi_up() + margin);
     if (!m_.vars[v].periodic) {
-      lo = std::max(lo, domain_[v].lo_down());
-      hi = std::min(hi, domain_[v].hi_up());
+      lo = std::max(lo, m_.vars[v].inner_lo);
+      hi = std::min(hi, m_.vars[v].inner_hi);
     }
     ex.image[j].set_hull(lo, hi);
     round_out_to_doubles(ex.image[j]);

@@ -6,7 +6,8 @@
 //    in [q] ⊆ [q~] (parametric Hansen–Sengupta, iteration (9));
 //  - coverage: the cell's commands lie in [q~], so every solution of the cell is in B
 //    (no branch of the cell is lost: the separation bound relies on it);
-//  - domain: [q] lies in the declared domain of every non-periodic command;
+//  - domain: [q] lies in the declared domain of every non-periodic command (its inner
+//    enclosure), and the pose meets the declared domain;
 //  - P2: Fx and Fq are strongly regular on B;
 //  - inner test: every additional constraint is certainly true on B.
 // Otherwise it returns the first property that failed, in that order. The recorded
@@ -43,7 +44,7 @@ class SolutionBoxProver {
   const Model& m_;
   double tau_;
   int max_iterations_;
-  Box domain_, retry_;
+  Box retry_;
   HsWorkspace ws_;
   IMatrix J_;
 };

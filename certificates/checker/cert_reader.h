@@ -50,9 +50,26 @@ class LineReader {
   std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
 };
 
+struct CheckOptions {
+  bool quiet = false;          // no statistics on stderr
+  bool trust_factors = false;  // accept a bound that rests on user-supplied factors
+};
+
+// What a check found; `verdict` is VERIFIED, UNCHECKED, REJECTED or MALFORMED.
+struct Verdict {
+  std::string verdict, reason, cert_sha, model_sha, robot;
+  long record = 0;  // the record a rejection concerns
+  long solutions = 0, undecided = 0, links = 0, csncs = 0;
+  long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user
+  bool user_factors = false;
+};
+
+// Exit statuses of check_cert.
+enum Exit { kVerified = 0, kRejected = 1, kMalformed = 2, kUserFactors = 3 };
+
 // The whole check (main.cpp): reads a certificate from f (closed on return) and returns the
-// exit code (0 verified, 1 rejected, 2 malformed) with the verdict line in `result`.
-int check_certificate(FILE* f, bool quiet, std::string& result);
+// exit status, with what it found in `out`.
+int check_certificate(FILE* f, const CheckOptions& o, Verdict& out);
 
 // Field parsers; `rec` is the record number used in error messages.
 int64_t parse_int(std::string_view s, long rec);

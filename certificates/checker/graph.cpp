@@ -68,29 +68,32 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
     for (size_t j = i + 1; j < items.size() && items[j].lo <= items[i].hi; ++j) {
       const Item &p = items[i], &q = items[j];
       if (p.id == q.id || (p.k && q.k)) continue;
-      // Every other variable v: p_v meets q_v + 2πk for some k (independently per variable).
+      // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
+      // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
+      const int a = std::min(p.id, q.id);
+      const int b = std::max(p.id, q.id);
       bool meet = true;
       for (int v = 0; v < nv && meet; ++v) {
-        const double* a = R.box(p.id) + 2 * v;
-        meet = v == d;
+        const double* x = R.box(a) + 2 * v;
+        meet = false;
         for (int k = 0; k < 3 && !meet; ++k) {
-          const std::array<double, 2>& s = S[(size_t(q.id) * nv + v) * 3 + k];
-          meet = a[0] <= s[1] && s[0] <= a[1];
+          const std::array<double, 2>& s = S[(size_t(b) * nv + v) * 3 + k];
+          meet = x[0] <= s[1] && s[0] <= x[1];
         }
       }
-      if (meet) out.emplace_back(std::min(p.id, q.id), std::max(p.id, q.id));
+      if (meet) out.emplace_back(a, b);
     }
   return out;
 }
 
-long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M) {
+long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, uint32_t use) {
   const size_t N = R.size();
-  const uint32_t full = R.p >= 32 ? ~0u : (1u << R.p) - 1;
-  // Only the sign vectors s of solution boxes with every sign verified can count (bit i of
-  // s set: factor i positive): at most N classes instead of 2^p.
+  const uint32_t full = use;
+  // Only the sign vectors s of solution boxes with every used sign verified can count (bit
+  // i of s set: factor i positive): at most N classes instead of 2^p.
   std::vector<uint32_t> classes;
   for (size_t b = 0; b < N; ++b)
-    if (R.solution[b] && (R.pos[b] | R.neg[b]) == full) classes.push_back(R.pos[b]);
+    if (R.solution[b] && ((R.pos[b] | R.neg[b]) & full) == full) classes.push_back(R.pos[b] & full);
   std::sort(classes.begin(), classes.end());
   classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
   UnionFind uf;
@@ -103,7 +106,7 @@ long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M) {
       if (compat[e.first] && compat[e.second]) uf.unite(e.first, e.second);
     std::fill(counted.begin(), counted.end(), 0);
     for (size_t b = 0; b < N; ++b) {
-      if (!R.solution[b] || R.pos[b] != s || R.neg[b] != (~s & full)) continue;
+      if (!R.solution[b] || (R.pos[b] & full) != s || (R.neg[b] & full) != (~s & full)) continue;
       int r = uf.find(int(b));
       if (!counted[r]) counted[r] = 1, ++total;
     }

@@ -35,7 +35,8 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
                                                  const Ival& two_pi);
 // Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
 // with s, joined by M) holding a solution box whose signs are all verified and equal s.
-long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M);
+// Only the factors whose bit is set in `use` separate (the others are ignored).
+long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, uint32_t use);
 // Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
 long filtered_count(const std::vector<int64_t>& sizes);
 

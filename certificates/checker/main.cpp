@@ -3,7 +3,9 @@
 // (FORMAT.md is the specification). It keeps only what later sections need: the output
 // boxes as doubles with their verified signs, and the union-find of verified links. Exit
 // 0 only after everything verified (one VERIFIED line); 1 on the first failed
-// verification (REJECTED) or out of memory; 2 on a malformed file (MALFORMED) or usage.
+// verification (REJECTED) or out of memory; 2 on a malformed file (MALFORMED) or usage;
+// 3 when every proof verified but the claimed bound needs a user-supplied factor
+// (UNCHECKED; 0 with --trust-factors). `--json` prints the verdict as one JSON object.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -60,6 +62,21 @@ struct Checker {
     return strict ? a > 0 && b < 0 : a >= 0 && b <= 0;
   }
 
+  // hi - lo >= 2π, proved: a periodic root cell then covers every angle (a shorter one,
+  // declared with a rounded pi, would leave a gap that splits an aspect at the seam).
+  bool spans_period(double lo, double hi) {
+    Ival w;
+    mpfi_set_d(w, hi);
+    mpfi_sub_d(w, w, lo);
+    return mpfr_cmp(w.L(), ev->two_pi.R()) >= 0;
+  }
+  // A non-periodic variable v of `box` meets the inner enclosure of its declared domain,
+  // so the box holds configurations of that domain (a periodic one always does, mod 2π).
+  bool meets_domain(const double* box, int v) const {
+    if (periodic[v]) return true;
+    return mpfr_cmp_d(dlo[v].R(), box[2 * v + 1]) <= 0 && mpfr_cmp_d(dhi[v].L(), box[2 * v]) >= 0;
+  }
+
   std::string show(const std::vector<double>& b) const {  // a box, for messages
     std::string s;
     char buf[64];
@@ -73,7 +90,7 @@ struct Checker {
   void store(std::string_view signs, bool jac, const double* box, bool solution);
   void solution_leaf(const Fields& f, const std::vector<double>& cell);
   void link_section(UnionFind& uf);
-  std::string run(bool quiet);
+  void run(const CheckOptions& o, Verdict& out);
 };
 
 void Checker::header() {
@@ -124,14 +141,13 @@ void Checker::header() {
   if (!(parse_real(rd.expect({"eps"}, 1)[1], rec()) > 0)) malformed(rec(), "eps must be > 0");
   root = reals(rd.expect({"domain"}, 2 * size_t(nv)), 1, 2 * nv, true);
   for (int v = 0; v < nv; ++v) {
-    double lo = root[2 * v], hi = root[2 * v + 1];
-    if (mpfr_cmp_d(dlo[v].L(), lo) < 0 || mpfr_cmp_d(dhi[v].R(), hi) > 0)
-      reject("root cell does not contain the declared domain of '" + m.vars[v].name + "'");
-    // A periodic root cell may exceed the declared bounds by 1e-9 (a tolerance only).
-    mpfr_sub_d(w.L(), dlo[v].L(), 1e-9, MPFR_RNDD);
-    mpfr_add_d(w.R(), dhi[v].R(), 1e-9, MPFR_RNDU);
-    if (periodic[v] && (mpfr_cmp_d(w.L(), lo) > 0 || mpfr_cmp_d(w.R(), hi) < 0))
-      reject("root cell exceeds the period of '" + m.vars[v].name + "'");
+    // The root cell is the declared domain rounded outward to doubles, nothing more: it
+    // covers every configuration, and it cannot hold boxes of another (wider) domain.
+    if (root[2 * v] != dlo[v].lo() || root[2 * v + 1] != dhi[v].hi())
+      reject("root cell is not the declared domain of '" + m.vars[v].name +
+             "' rounded outward to doubles");
+    if (periodic[v] && !spans_period(root[2 * v], root[2 * v + 1]))
+      reject("root cell of periodic '" + m.vars[v].name + "' does not provably span 2*pi");
   }
   int64_t pp = I(rd.expect({"factors"}, 1)[1]);
   if (pp < 0 || pp > 20) reject("number of factors out of range 0..20");
@@ -198,6 +214,11 @@ void Checker::solution_leaf(const Fields& f, const std::vector<double>& cell) {
       reject("IMAGE leaves the declared domain of " + m.vars[v].name);
     B[2 * v] = img[2 * j], B[2 * v + 1] = img[2 * j + 1];
   }
+  // The box must hold configurations of the declared domain: its commands lie in it (just
+  // above), each pose variable must meet it. A box outside it may not count for the bound.
+  for (int v : m.pose)
+    if (!meets_domain(B.data(), v))
+      reject("solution box misses the declared domain of " + m.vars[v].name + show(B));
   pr->load(cell.data());
   if (const char* why = pr->newton(Q.data(), C.data())) reject(std::string("P1: ") + why);
   for (int j = 0; j < n; ++j) {
@@ -324,7 +345,7 @@ void Checker::link_section(UnionFind& uf) {
   }
 }
 
-std::string Checker::run(bool quiet) {
+void Checker::run(const CheckOptions& o, Verdict& out) {
   auto t0 = std::chrono::steady_clock::now();
   header();
   tree();
@@ -361,48 +382,145 @@ std::string Checker::run(bool quiet) {
   if (claim < 0) malformed(rec(), "negative lower bound");
   if (I(rd.expect({"end"}, 1)[1]) != rec() - 1) malformed(rec(), "end: wrong record count");
   rd.expect_eof();
-  long bound = lower_bound(R, neighbour_pairs(R, periodic, ev->two_pi));
+  std::vector<std::pair<int, int>> M = neighbour_pairs(R, periodic, ev->two_pi);
+  uint32_t all = 0, checkable = 0;  // factor bits: every factor, the checkable ones
+  for (int i = 0; i < p; ++i) {
+    all |= 1u << i;
+    if (factors[i].kind != Factor::User) checkable |= 1u << i;
+  }
+  long bound = lower_bound(R, M, all);
   if (claim > bound)
     rejected(claim_rec, "claimed lower bound " + std::to_string(claim) + " exceeds the recomputed " + std::to_string(bound));
-  if (!quiet)
+  // Without the user factors, which the checker cannot verify, the bound may be lower.
+  long checked = user_factors ? lower_bound(R, M, checkable) : bound;
+  if (!o.quiet)
     std::fprintf(stderr, "check_cert: %ld refutations (%ld boxes), recomputed lower bound %ld, %.2f s\n",
                  pr->refutations, pr->refute_boxes, bound,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  return "VERIFIED sha256(cert)=" + rd.file_sha256() + " sha256(model)=" + model_sha + " robot=" + m.name +
-         " solutions=" + std::to_string(solutions) + " undecided=" + std::to_string(undecided) + " links=" +
-         std::to_string(links) + " csncs=" + std::to_string(comps) + " lower_bound=" + std::to_string(claim) +
-         (user_factors ? " [factors rest on user input]" : "");
+  out.verdict = "VERIFIED";
+  if (claim > checked) {
+    out.reason = "the claimed lower bound rests on user-supplied factors, which the checker "
+                 "cannot verify; without them it is " + std::to_string(checked);
+    if (o.trust_factors) out.reason += "; trusted (--trust-factors)";
+    else out.verdict = "UNCHECKED";
+  }
+  out.cert_sha = rd.file_sha256();
+  out.model_sha = model_sha;
+  out.robot = m.name;
+  out.solutions = solutions;
+  out.undecided = undecided;
+  out.links = links;
+  out.csncs = comps;
+  out.claimed = claim;
+  out.recomputed = bound;
+  out.checked = checked;
+  out.user_factors = user_factors;
 }
 
 }  // namespace
 
-int cc::check_certificate(FILE* f, bool quiet, std::string& result) {
+int cc::check_certificate(FILE* f, const CheckOptions& o, Verdict& out) {
+  out = Verdict();
   try {
-    result = Checker(f).run(quiet);
-    return 0;
+    Checker(f).run(o, out);
+    return out.verdict == "VERIFIED" ? kVerified : kUserFactors;
   } catch (const CertError& e) {
-    result = std::string(e.malformed ? "MALFORMED" : "REJECTED") + " record " + std::to_string(e.record) + ": " + e.what();
-    return e.malformed ? 2 : 1;
+    out.verdict = e.malformed ? "MALFORMED" : "REJECTED";
+    out.record = e.record;
+    out.reason = e.what();
+    return e.malformed ? kMalformed : kRejected;
   } catch (const std::bad_alloc&) {
-    result = "REJECTED: out of memory";
+    out.verdict = "REJECTED";
+    out.reason = "out of memory";
   } catch (const std::exception& e) {
-    result = std::string("REJECTED: internal error: ") + e.what();
+    out.verdict = "REJECTED";
+    out.reason = std::string("internal error: ") + e.what();
   }
-  return 1;
+  return kRejected;
 }
 
 #ifndef CHECK_CERT_NO_MAIN
 #include "aspects_version.h"  // generated by the build (version and git commit)
+namespace {
+
+// s as a JSON string literal: a name from the model cannot break out of its quotes.
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      q += '\\';
+      q += char(c);
+    } else if (c < 0x20 || c >= 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      q += buf;
+    } else {
+      q += char(c);
+    }
+  }
+  return q + "\"";
+}
+
+// One line. The robot's name, the one field a user controls, comes last and quoted.
+std::string text_line(const Verdict& v) {
+  std::string s = "check_cert: " + v.verdict;
+  if (v.verdict == "REJECTED" || v.verdict == "MALFORMED") {
+    if (v.record > 0) s += " record " + std::to_string(v.record);
+    return s + ": " + v.reason;
+  }
+  s += " sha256(cert)=" + v.cert_sha + " sha256(model)=" + v.model_sha;
+  s += " solutions=" + std::to_string(v.solutions);
+  s += " undecided=" + std::to_string(v.undecided);
+  s += " links=" + std::to_string(v.links);
+  s += " csncs=" + std::to_string(v.csncs);
+  s += " lower_bound=" + std::to_string(v.claimed);
+  s += " checked_lower_bound=" + std::to_string(v.checked);
+  s += " robot=" + quoted(v.robot);
+  if (!v.reason.empty()) s += " (" + v.reason + ")";
+  return s;
+}
+
+std::string json_line(const Verdict& v, int code) {
+  std::string s = "{\"verdict\": " + quoted(v.verdict);
+  s += ", \"exit\": " + std::to_string(code);
+  if (v.record > 0) s += ", \"record\": " + std::to_string(v.record);
+  if (!v.reason.empty()) s += ", \"reason\": " + quoted(v.reason);
+  if (code == kVerified || code == kUserFactors) {
+    s += ", \"sha256_cert\": " + quoted(v.cert_sha);
+    s += ", \"sha256_model\": " + quoted(v.model_sha);
+    s += ", \"robot\": " + quoted(v.robot);
+    s += ", \"solutions\": " + std::to_string(v.solutions);
+    s += ", \"undecided\": " + std::to_string(v.undecided);
+    s += ", \"links\": " + std::to_string(v.links);
+    s += ", \"csncs\": " + std::to_string(v.csncs);
+    s += ", \"lower_bound\": " + std::to_string(v.claimed);
+    s += ", \"recomputed_lower_bound\": " + std::to_string(v.recomputed);
+    s += ", \"checked_lower_bound\": " + std::to_string(v.checked);
+    s += std::string(", \"user_factors\": ") + (v.user_factors ? "true" : "false");
+  }
+  return s + "}";
+}
+
+const char* const kHelp =
+    "usage: check_cert [--quiet] [--json] [--trust-factors] FILE.cert | --version | --help\n"
+    "Re-verifies a certificate of `aspects solve` (certificates/FORMAT.md).\n"
+    "  --json           print the verdict as one JSON object (for scripts)\n"
+    "  --trust-factors  accept a lower bound that rests on user-supplied factors\n"
+    "Exit 0: verified; 1: rejected (or out of memory); 2: malformed or usage error;\n"
+    "3: every proof verified, but the claimed lower bound rests on a user-supplied\n"
+    "   `factor` the checker cannot verify (not given --trust-factors).\n";
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  bool quiet = false, usage = argc < 2;
+  CheckOptions o;
+  bool json = false;
+  bool usage = argc < 2;
   std::string path;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--help") {
-      std::printf("usage: check_cert [--quiet] FILE.cert | --version | --help\n"
-                  "Re-verifies a certificate of `aspects solve` (certificates/FORMAT.md).\n"
-                  "Exit 0: verified; 1: rejected (or out of memory); 2: malformed or usage error.\n");
+      std::printf("%s", kHelp);
       return 0;
     }
     if (a == "--version") {  // like --help: prints and exits 0 wherever it stands
@@ -410,18 +528,33 @@ int main(int argc, char** argv) {
                   ASPECTS_GIT_COMMIT, *ASPECTS_GIT_COMMIT ? ")" : "");
       return 0;
     }
-    if (a == "--quiet") quiet = true;
-    else if (a.empty() || a[0] == '-' || !path.empty()) usage = true;
-    else path = a;
+    if (a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "--json") {
+      json = true;
+    } else if (a == "--trust-factors") {
+      o.trust_factors = true;
+    } else if (a.empty() || a[0] == '-' || !path.empty()) {
+      usage = true;
+    } else {
+      path = a;
+    }
   }
   if (usage || path.empty()) {
-    std::fprintf(stderr, "usage: check_cert [--quiet] FILE.cert (see --help)\n");
-    return 2;
+    std::fprintf(stderr, "usage: check_cert [--quiet] [--json] [--trust-factors] FILE.cert"
+                         " (see --help)\n");
+    return kMalformed;
   }
   FILE* f = std::fopen(path.c_str(), "rb");
-  std::string result = "MALFORMED record 0: cannot open " + path;
-  int code = f ? check_certificate(f, quiet, result) : 2;
-  std::printf("check_cert: %s\n", result.c_str());
+  Verdict v;
+  int code = kMalformed;
+  if (f) {
+    code = check_certificate(f, o, v);
+  } else {
+    v.verdict = "MALFORMED";
+    v.reason = "cannot open " + path;
+  }
+  std::printf("%s\n", json ? json_line(v, code).c_str() : text_line(v).c_str());
   return code;
 }
 #endif

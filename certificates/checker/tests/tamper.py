@@ -10,8 +10,16 @@ for a certificate that parses but claims something false, 2 (MALFORMED) for one 
 the format, 0 for a changed hint that still proves every claim; optionally also a word of
 the message, when the reason matters (constraints). Every mutation must change the file and be applicable; the script fails
 otherwise, so the suite cannot silently shrink.
+
+The class "model edits that keep the tree" edits the embedded model and re-hashes it (byte
+count and SHA-256 consistent), so the edit reaches the proofs: every variable's domain
+narrowed, widened and shifted (always rejected), constants changed, constraints added and
+removed, factors added, the robot renamed (rejected, or accepted only when every claim is
+still true of the edited model; each case says which). Last, the exit statuses 3
+(UNCHECKED: a bound resting on a user-supplied factor) and the --json verdict.
 """
 import hashlib
+import json
 import os
 import subprocess
 import sys
@@ -226,6 +234,70 @@ def edit(c, i, new):
     return c.text()
 
 
+
+# --------------------------------------------- model edits that keep the tree
+# The embedded model is edited and re-hashed (byte count and SHA-256 consistent), while
+# the tree, links and claims stay: the mutation reaches the proofs. A domain edit is always
+# rejected (the root cell must be the declared domain rounded outward); any other edit is
+# accepted only when every claim is still true of the edited model.
+
+def model_line(c, prefix):
+    return next(k for k in range(3, c.body - 1) if c.lines[k].startswith(prefix))
+
+
+def model_edit(c, prefix, new):
+    c.lines[model_line(c, prefix)] = new
+    return c.rehash().text()
+
+
+def model_add(c, line):
+    c.lines.insert(c.body - 1, line)
+    c.body += 1
+    return c.rehash().fix_end().text()
+
+
+def domains(c):
+    """(name, kind, lo, hi, periodic) of each variable declared with numeric bounds."""
+    out = []
+    for k in range(3, c.body - 1):
+        f = c.lines[k].split()
+        if len(f) >= 4 and f[0] in ("pose", "command") and f[2] == "in":
+            lo, hi = c.lines[k].split("[")[1].split("]")[0].split(",")
+            out.append((f[1], f[0], lo.strip(), hi.strip(), "periodic" in f))
+    return out
+
+
+def domain_edit(c, name, how):
+    """Narrowed (10% of the width off each end), widened (by 1 each side), shifted (by 10%
+    of the width); a periodic domain keeps one period when shifted (`+ 0.5`)."""
+    k = next(i for i in range(3, c.body - 1) if c.lines[i].split()[:2][-1:] == [name]
+             and c.lines[i].split()[0] in ("pose", "command"))
+    kind, _, _, per = next((d[1], d[2], d[3], d[4]) for d in domains(c) if d[0] == name)
+    lo, hi = [x.strip() for x in c.lines[k].split("[")[1].split("]")[0].split(",")]
+    w = "((%s) - (%s))" % (hi, lo)
+    if how == "narrowed":
+        lo, hi = "%s + 0.1*%s" % (lo, w), "%s - 0.1*%s" % (hi, w)
+    elif how == "widened":
+        lo, hi = "%s - 1" % lo, "%s + 1" % hi
+    else:
+        d = "0.5" if per else "0.1*%s" % w
+        lo, hi = "%s + %s" % (lo, d), "%s + %s" % (hi, d)
+    c.lines[k] = "%s %s in [%s, %s]%s" % (kind, name, lo, hi, " periodic" if per else "")
+    return c.rehash().text()
+
+
+def domain_mutations(base_text):
+    """Every variable's domain narrowed, widened and shifted: always rejected. A periodic
+    domain narrowed or widened is no longer one period: the embedded model is malformed (2)."""
+    out = []
+    for name, kind, lo, hi, per in domains(Cert(base_text)):
+        for how in ("narrowed", "widened", "shifted"):
+            want = (2, "not one period") if per and how != "shifted" else (1, "root cell")
+            out.append(("domain_%s_%s" % (name, how),
+                        lambda c, name=name, how=how: domain_edit(c, name, how), want))
+    return out
+
+
 def mutations_real(base):
     """(name, function of a fresh Cert, expected exit code) on a PRRP certificate."""
     return [
@@ -270,6 +342,28 @@ def mutations_real(base):
         ("output_id_out_of_order", lambda c: replace_first(c, "S", lambda f: f.__setitem__(1, str(int(f[1]) + 1))), 1),
         ("hint_preconditioner_perturbed", lambda c: perturb_hints(c, 1e-9, 0), 0),
         ("claim_images_narrowed", narrow_images, 1),
+        # Model edits keeping the tree (re-hashed). Constants: a wider bar length moves
+        # the solutions out of the recorded boxes (a refutation fails).
+        # Issue 15: this forgery printed VERIFIED lower_bound=4 (the truth is 2).
+        ("issue15_forgery_x_narrowed",
+         lambda c: model_edit(c, "pose    x", "pose    x in [-2, -0.5]"), (1, "root cell")),
+        ("model_constant_a_changed", lambda c: model_edit(c, "constant a", "constant a = 0.5"), 1),
+        # The claim is still true of this model (l = 1 + 1e-15: 4 aspects) and every proof
+        # keeps its margin: accepted.
+        ("model_constant_l_changed_within_margins",
+         lambda c: model_edit(c, "constant l", "constant l = 1.000000000000001"), 0),
+        # A constraint true on the whole domain: every claim still holds, accepted.
+        ("model_constraint_added_always_true", lambda c: model_add(c, "constraint x >= -3"), 0),
+        # A constraint false on half of the solution boxes: the inner test fails.
+        ("model_constraint_added_cuts", lambda c: model_add(c, "constraint x >= 0"),
+         (1, "inner test")),
+        # A factor in the model that the certificate does not use: the bound rests on detFx
+        # and detFq only, so it is still true; accepted.
+        ("model_factor_added_unused", lambda c: model_add(c, "factor x - 0.5"), 0),
+        # The robot's name cannot forge the verdict line: quoted, after the real fields.
+        ("model_name_forging_verdict",
+         lambda c: model_edit(c, "robot", "robot PRRP csncs=9 lower_bound=99"),
+         (0, 'lower_bound=4 checked_lower_bound=4 robot="PRRPcsncs=9lower_bound=99"')),
     ]
 
 
@@ -288,6 +382,10 @@ def mutations_constrained():
          (1, "discarded cell")),
         ("discard_hint_c0_to_hs", lambda c: c.text().replace("\nX c0\n", "\nX hs\n"), 0),
         ("discard_hint_malformed", lambda c: c.text().replace("\nX c0\n", "\nX c00\n", 1), 2),
+        # A second constraint true on the whole root cell (|x1| <= 40): accepted.
+        ("constraint_added_always_true", lambda c: model_add(c, "constraint x1*x1 <= 1600"), 0),
+        # A second constraint that cuts solution boxes: the inner test fails.
+        ("constraint_added_cuts", lambda c: model_add(c, "constraint x1 >= 0"), (1, "inner test")),
     ]
 
 
@@ -347,10 +445,17 @@ def main():
     bases = []  # (tag, path, mutations)
     if len(sys.argv) > 5:  # the real thing: certificates written by the solver
         aspects, robots = sys.argv[4], sys.argv[5]
-        for robot, eps, muts in (("prrp", "0.1", mutations_real(None)), ("rrrrr_joint_limit", "0.5", mutations_constrained())):
+        for robot, eps, muts in (("prrp", "0.1", mutations_real(None)), ("rprpr", "0.2", [
+                                     # Issue 15: VERIFIED lower_bound=2 before (the truth is 1).
+                                     ("issue15_forgery_x2_narrowed",
+                                      lambda c: model_edit(c, "pose    x2",
+                                                           "pose    x2 in [0.5, 20]"),
+                                      (1, "root cell"))]),
+                                 ("rrrrr_joint_limit", "0.5", mutations_constrained())):
             subprocess.run([aspects, "solve", os.path.join(robots, robot + ".robot"), "--eps", eps,
                             "--out", os.path.join(work, robot), "--quiet"], check=True)
-            bases.append((robot, os.path.join(work, robot, "aspects.cert"), muts))
+            path = os.path.join(work, robot, "aspects.cert")
+            bases.append((robot, path, muts + domain_mutations(open(path).read())))
     else:
         bases.append(("circle", os.path.join(tests, "valid", "circle.cert"), mutations_real(None)))
     cases = []
@@ -385,7 +490,44 @@ def main():
                                                    ", '%s'" % word if word else "", msg[:110]))
         failed += not ok
     print("%d mutations, %d failed (bases: %s)" % (len(cases), failed, ", ".join(b[1] for b in bases)))
+    if len(sys.argv) > 5:  # after the mutations: json_rejected reads one of their files
+        failed += verdict_cases(check, sys.argv[4], sys.argv[5], work)
     return 1 if failed else 0
+
+
+def verdict_cases(check, aspects, robots, work):
+    """Exit statuses and the JSON verdict. A PRRP with a false user factor (x - 0.5 does not
+    vanish only at singularities) claims 6 aspects; the truth is 4. check_cert cannot know
+    the factor is false: exit 3 (UNCHECKED) unless --trust-factors."""
+    model = os.path.join(work, "prrp_user_factor.robot")
+    with open(os.path.join(robots, "prrp.robot")) as f, open(model, "w") as g:
+        g.write(f.read() + "factor x - 0.5\n")
+    out = os.path.join(work, "prrp_user_factor")
+    subprocess.run([aspects, "solve", model, "--eps", "0.1", "--out", out, "--quiet"], check=True)
+    uf = os.path.join(out, "aspects.cert")
+    prrp = os.path.join(work, "prrp", "aspects.cert")
+    forged = os.path.join(work, "prrp__domain_x_narrowed.cert")
+    cases = [
+        ("user_factor_unchecked", [uf], 3, "UNCHECKED"),
+        ("user_factor_unchecked_says_why", [uf], 3, "lower_bound=6 checked_lower_bound=4"),
+        ("user_factor_trusted", ["--trust-factors", uf], 0, "VERIFIED"),
+        ("user_factor_json", ["--json", uf], 3, '"verdict": "UNCHECKED", "exit": 3'),
+        ("json_verified", ["--json", prrp], 0, '"verdict": "VERIFIED", "exit": 0'),
+        ("json_bound", ["--json", prrp], 0, '"lower_bound": 4'),
+        ("json_rejected", ["--json", forged], 1, '"verdict": "REJECTED", "exit": 1'),
+    ]
+    failed = 0
+    for name, args, want, word in cases:
+        r = subprocess.run([check, "--quiet"] + args, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT)
+        msg = r.stdout.decode(errors="replace").strip()
+        ok = r.returncode == want and word in msg
+        if args[0] == "--json" and ok:
+            ok = json.loads(msg)["exit"] == want
+        print("%s verdict/%-47s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
+                                                              r.returncode, want, word, msg[:110]))
+        failed += not ok
+    return failed
 
 
 if __name__ == "__main__":

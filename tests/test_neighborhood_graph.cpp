@@ -1,0 +1,93 @@
+// The solver's neighbourhood graph M must be exactly the graph certificates/FORMAT.md
+// defines ("claim lower-bound"), which check_cert recomputes: a pair (a, b), a < b, is in
+// M when for every variable v some k_v ∈ {−1, 0, 1} (0 unless v is periodic) gives
+// a.lo_v ≤ ⌈b.hi_v + 2πk_v⌉ and ⌊b.lo_v + 2πk_v⌋ ≤ a.hi_v (ends rounded outward to
+// doubles). Here M is recomputed by brute force over all pairs of a real solve and
+// compared pair by pair; each recorded shift must also satisfy the test.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <set>
+#include <utility>
+
+#include "generalized_aspects.h"
+
+using namespace aspects;
+
+namespace {
+
+using Ends = std::vector<std::array<double, 2>>;
+
+// Shifted ends of every box: E[(b·nv + v)·3 + k + 1] = {⌊b.lo_v + 2πk⌋, ⌈b.hi_v + 2πk⌉}.
+Ends shifted_ends(const BoxStore& R, const std::vector<bool>& periodic) {
+  const int nv = R.nv();
+  Interval two_pi, t;
+  mpfi_const_pi(two_pi.get());
+  mpfi_mul_ui(two_pi.get(), two_pi.get(), 2);
+  Ends E(size_t(R.size()) * nv * 3);
+  for (int b = 0; b < R.size(); ++b)
+    for (int v = 0; v < nv; ++v)
+      for (int k = -1; k <= 1; ++k) {
+        std::array<double, 2>& e = E[(size_t(b) * nv + v) * 3 + k + 1];
+        e = {R.lo(b, v), R.hi(b, v)};
+        if (k == 0 || !periodic[v]) continue;
+        mpfi_mul_si(t.get(), two_pi.get(), k);
+        mpfi_add_d(t.get(), t.get(), R.lo(b, v));
+        e[0] = t.lo_down();
+        mpfi_mul_si(t.get(), two_pi.get(), k);
+        mpfi_add_d(t.get(), t.get(), R.hi(b, v));
+        e[1] = t.hi_up();
+      }
+  return E;
+}
+
+bool meets(const BoxStore& R, const Ends& E, int a, int b, int v, int k) {
+  const std::array<double, 2>& e = E[(size_t(b) * R.nv() + v) * 3 + k + 1];
+  return R.lo(a, v) <= e[1] && e[0] <= R.hi(a, v);
+}
+
+void expect_format_graph(const std::string& file, double eps) {
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/" + file);
+  AspectsConfig cfg;
+  cfg.eps = eps;
+  AspectsResult r = compute_aspects(m, cfg);
+  std::vector<bool> periodic;
+  for (const auto& v : m.vars) periodic.push_back(v.periodic);
+  const BoxStore& R = r.boxes;
+  const int nv = R.nv();
+  auto E = shifted_ends(R, periodic);
+  std::set<std::pair<int, int>> want;
+  for (int a = 0; a < R.size(); ++a)
+    for (int b = a + 1; b < R.size(); ++b) {
+      bool all = true;
+      for (int v = 0; v < nv && all; ++v)
+        all = meets(R, E, a, b, v, -1) || meets(R, E, a, b, v, 0) || meets(R, E, a, b, v, 1);
+      if (all) want.insert({a, b});
+    }
+  std::set<std::pair<int, int>> got;
+  for (const NeighborPair& e : r.neighbors) {
+    ASSERT_LT(e.a, e.b);
+    EXPECT_TRUE(got.insert({e.a, e.b}).second) << "pair listed twice: " << e.a << " " << e.b;
+    for (int v = 0; v < nv; ++v) {
+      EXPECT_TRUE(periodic[v] || e.shift(v) == 0);
+      EXPECT_TRUE(meets(R, E, e.a, e.b, v, e.shift(v))) << "shift does not make the boxes meet";
+    }
+  }
+  int missing = 0, extra = 0;
+  for (const auto& p : want) missing += !got.count(p);
+  for (const auto& p : got) extra += !want.count(p);
+  EXPECT_EQ(missing, 0) << file << ": pairs of FORMAT.md's M missing from the solver's";
+  EXPECT_EQ(extra, 0) << file << ": pairs in the solver's M that FORMAT.md's does not have";
+  EXPECT_EQ(got.size(), want.size());
+  EXPECT_GT(want.size(), 0u);
+}
+
+}  // namespace
+
+TEST(NeighborhoodGraph, PrrpEqualsFormatGraph) { expect_format_graph("prrp.robot", 0.1); }
+
+TEST(NeighborhoodGraph, RprprEqualsFormatGraph) { expect_format_graph("rprpr.robot", 0.2); }
+
+// Periodic commands whose images cross the seam: the case that lost pairs.
+TEST(NeighborhoodGraph, RrrrrEqualsFormatGraph) { expect_format_graph("rrrrr.robot", 0.5); }
