@@ -1,0 +1,62 @@
+#!/usr/bin/python3
+"""Interleaved comparison of `aspects solve` variants (binaries and/or options) on the
+same cases, for ablation tables: on a shared, noisy machine, variant A and B alternate
+run by run so that both see the same load. Reports medians of wall and CPU seconds,
+the output boxes (solution/undecided) and the peak RSS. Usage:
+
+    bench/ablate.py [--repeat 3] [--threads 1] --variant NAME=BINARY[,ARG...] ... CASE ...
+
+A CASE is ROBOT:EPS (a file under robots/ without .robot, or a path), e.g. rrrrr:0.3.
+Example (before/after of one change, old binary built from the previous commit):
+
+    bench/ablate.py --variant before=/tmp/aspects.old --variant after=build/apps/aspects rrrrr:0.3
+
+Prints a Markdown table to stdout."""
+import argparse, os, statistics, subprocess, sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def solve(binary, args, model, eps, threads):
+    cmd = ["/usr/bin/time", "-f", "%e %U %S %M", binary, "solve", model, "--eps", eps,
+           "--threads", str(threads), "--no-cert"] + args
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"ablate: {' '.join(cmd)} failed ({p.returncode}):\n{p.stderr}")
+    wall, user, sys_, rss = p.stderr.strip().splitlines()[-1].split()
+    boxes = next(l for l in p.stdout.splitlines() if l.startswith("boxes:"))
+    return float(wall), float(user) + float(sys_), int(rss), boxes.split(":", 1)[1].strip()
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--variant", action="append", required=True)
+    ap.add_argument("cases", nargs="+")
+    a = ap.parse_args()
+    variants = []
+    for v in a.variant:
+        name, spec = v.split("=", 1)
+        parts = spec.split(",")
+        variants.append((name, parts[0], parts[1:]))
+    print(f"threads {a.threads}, {a.repeat} interleaved runs per variant\n")
+    print("| robot | eps | variant | median wall s | median CPU s | boxes (solution, undecided) | peak MiB |")
+    print("|---|---|---|---|---|---|---|")
+    for case in a.cases:
+        robot, eps = case.rsplit(":", 1)
+        model = robot if os.path.sep in robot else os.path.join(ROOT, "robots", robot + ".robot")
+        results = {name: [] for name, _, _ in variants}
+        for _ in range(a.repeat):
+            for name, binary, args in variants:
+                results[name].append(solve(binary, args, model, eps, a.threads))
+        for name, _, _ in variants:
+            r = results[name]
+            print(f"| {os.path.basename(robot)} | {eps} | {name} | "
+                  f"{statistics.median(x[0] for x in r):.2f} | "
+                  f"{statistics.median(x[1] for x in r):.2f} | {r[0][3]} | "
+                  f"{max(x[2] for x in r) / 1024:.0f} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
