@@ -187,13 +187,18 @@ void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
   line("links " + std::to_string(r.certified_links.size()));
   for (size_t i = 0; i < r.certified_links.size(); ++i) {
     const NeighborPair& e = r.neighbors[r.certified_links[i]];
-    const LinkProof& lp = r.link_proofs.at(i);
+    const LinkRecords& lp = r.link_proofs;
+    if (i >= lp.size()) throw std::logic_error("certificate: a certified link without its proof");
     std::string shift;
     for (int v = 0; v < nv; ++v) shift += "-0+"[e.shift(v) + 1];
     put("K %d %d %s", e.a, e.b, shift.c_str());
-    for (double x : lp.witness) real(x);
-    for (const auto& q : lp.existence.inflated) interval(q);
-    for (double c : lp.existence.C) real(c);
+    const int n = lp.n();
+    for (int j = 0; j < n; ++j) real(lp.witness(i)[j]);
+    for (int j = 0; j < n; ++j) {
+      real(lp.inflated_lo(i, j));
+      real(lp.inflated_hi(i, j));
+    }
+    for (int k = 0; k < n * n; ++k) real(lp.C(i)[k]);
     end_line();
   }
   line("csncs " + std::to_string(r.csnc_sizes.size()));

@@ -221,6 +221,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   out.factors = determinant_factors(model);  // adds nodes: before any evaluator exists
   const int nv = int(model.vars.size());
   out.boxes = BoxStore(nv);
+  out.link_proofs = LinkRecords(model.n());
   const long prec = working_precision();
 
   SearchStats stats;
@@ -293,7 +294,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // parallel and concatenated in order.
   const size_t block = 4096, blocks = (out.neighbors.size() + block - 1) / block;
   std::vector<std::vector<int32_t>> block_links(blocks);
-  std::vector<std::vector<LinkProof>> block_proofs(blocks);
+  std::vector<LinkRecords> block_proofs(blocks, LinkRecords(model.n()));
   arena.execute([&] {
     tbb::parallel_for(size_t(0), blocks, [&](size_t k) {
       set_working_precision(prec);
@@ -306,14 +307,15 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
         if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
         if (!certify_link(ev, out.boxes, pr, config.tau, lp, ws)) continue;
         block_links[k].push_back(int32_t(e));
-        if (config.keep_link_proofs) block_proofs[k].push_back(lp);
+        if (config.keep_link_proofs) block_proofs[k].push(lp);
       }
     });
   });
   for (size_t k = 0; k < blocks; ++k) {
     out.certified_links.insert(out.certified_links.end(), block_links[k].begin(),
                                block_links[k].end());
-    for (auto& lp : block_proofs[k]) out.link_proofs.push_back(std::move(lp));
+    out.link_proofs.append(block_proofs[k]);
+    block_proofs[k] = LinkRecords();
   }
 
   lap("certified links");

@@ -66,7 +66,7 @@ struct AspectsResult {
   std::vector<SearchNode> tree;
   std::vector<NeighborPair> neighbors;  // M
   std::vector<int32_t> certified_links; // indices into neighbors: N
-  std::vector<LinkProof> link_proofs;   // parallel to certified_links (if kept)
+  LinkRecords link_proofs;              // parallel to certified_links (if kept)
   std::vector<int32_t> csnc;            // box -> CSNC (decreasing size), -1 for undecided
   std::vector<int64_t> csnc_sizes;
   int filtered = 0;

@@ -25,6 +25,29 @@ struct LinkProof {
 bool inner_intersection(double alo, double ahi, double blo, double bhi, int k, double& lo,
                         double& hi);
 
+// The numbers of certified links that the certificate records (certificates/FORMAT.md,
+// `K`), kept as exact doubles in one array: per link the witness x̂ (n), the inflated
+// iterate [q~] (n intervals, lo then hi) and the preconditioner C (n×n, row major). A
+// LinkProof holds MPFI intervals, about ten times the memory; runs with millions of links
+// keep these instead.
+class LinkRecords {
+ public:
+  explicit LinkRecords(int n = 0) : n_(n) {}
+  void push(const LinkProof& p);
+  void append(const LinkRecords& o) { data_.insert(data_.end(), o.data_.begin(), o.data_.end()); }
+  size_t size() const { return n_ ? data_.size() / stride() : 0; }
+  const double* witness(size_t i) const { return &data_[i * stride()]; }
+  double inflated_lo(size_t i, int j) const { return data_[i * stride() + n_ + 2 * j]; }
+  double inflated_hi(size_t i, int j) const { return data_[i * stride() + n_ + 2 * j + 1]; }
+  const double* C(size_t i) const { return &data_[i * stride() + 3 * n_]; }
+  int n() const { return n_; }
+
+ private:
+  size_t stride() const { return size_t(3 * n_ + n_ * n_); }
+  int n_;
+  std::vector<double> data_;
+};
+
 bool certify_link(ModelEvaluator& ev, const BoxStore& R, const NeighborPair& pair, double tau,
                   LinkProof& proof, HsWorkspace& ws);
 

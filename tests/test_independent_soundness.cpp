@@ -150,10 +150,11 @@ TEST_P(IndependentSoundness, ClaimsHoldAtSampledPoints) {
   R two_pi = R(2) * R::pi();
   for (size_t i = 0; i < r.certified_links.size(); i += lstride) {
     const NeighborPair& e = r.neighbors[r.certified_links[i]];
-    const LinkProof& lp = r.link_proofs[i];
+    const LinkRecords& lp = r.link_proofs;
     Point p(nv);
-    for (int j = 0; j < m.n(); ++j) p[m.pose[j]] = R(lp.witness[j]);
-    for (int j = 0; j < m.n(); ++j) p[m.command[j]] = R(lp.existence.inflated[j].mid());
+    for (int j = 0; j < m.n(); ++j) p[m.pose[j]] = R(lp.witness(i)[j]);
+    for (int j = 0; j < m.n(); ++j)
+      p[m.command[j]] = (R(lp.inflated_lo(i, j)) + R(lp.inflated_hi(i, j))) / R(2);
     ASSERT_TRUE(newton(ref, m, p)) << "link " << e.a << "-" << e.b;
     for (int v = 0; v < nv; ++v) {
       ASSERT_TRUE(inside(r.boxes.lo(e.a, v), r.boxes.hi(e.a, v), p[v]))
