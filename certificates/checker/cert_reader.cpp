@@ -65,8 +65,15 @@ std::string LineReader::raw(size_t n) {
   std::string s(n, '\0');
   if (n && std::fread(&s[0], 1, n, f_) != n) malformed(line_ + 1, "model text truncated");
   EVP_DigestUpdate(md_, s.data(), n);
-  for (char c : s)
+  // Printable ASCII, tabs and newlines only, as the rest of the file: a '\r' (or another
+  // control or non-ASCII byte, e.g. a bidi override) inside a comment makes the model
+  // display differently from what the checker parses ("l = 1 #\rl = 2" shows l = 2).
+  for (char c : s) {
     if (c == '\n') ++line_;
+    unsigned char u = (unsigned char)c;
+    if (u != '\n' && u != '\t' && (u < 0x20 || u > 0x7e))
+      malformed(line_ + 1, "byte " + std::to_string(u) + " in the model text is not printable ASCII");
+  }
   int c = std::fgetc(f_);  // the model text is followed by exactly one '\n'
   if (c != '\n') malformed(line_ + 1, "model text not followed by a newline (wrong byte count?)");
   EVP_DigestUpdate(md_, "\n", 1);

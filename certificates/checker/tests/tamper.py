@@ -364,6 +364,15 @@ def mutations_real(base):
         ("model_name_forging_verdict",
          lambda c: model_edit(c, "robot", "robot PRRP csncs=9 lower_bound=99"),
          (0, 'lower_bound=4 checked_lower_bound=4 robot="PRRPcsncs=9lower_bound=99"')),
+        # A '\r' in a comment: a terminal shows 'constant l = 2 #', the checker reads l = 1.
+        # VERIFIED before (the model text was exempt from the ASCII rule).
+        ("model_cr_in_comment_displays_another_model",
+         lambda c: model_edit(c, "constant l", "constant l = 1 #\rconstant l = 2"),
+         (2, "byte 13 in the model text")),
+        # A bidi override in a comment (Trojan Source) likewise: VERIFIED before.
+        ("model_bidi_override_in_comment",
+         lambda c: model_edit(c, "constant a", "constant a = 0 # \u202e 2 = a tnatsnoc"),
+         (2, "not printable ASCII")),
     ]
 
 
