@@ -397,7 +397,7 @@ bool literal_value(const std::string& s, mpq_t out) {
     exp10 = std::stol(x);
   }
   long p = exp10 - frac;
-  if (p > 100000 || p < -100000 || digits.size() > 100000) return false;
+  if (p > 10000 || p < -10000 || digits.size() > 10000) return false;
   mpz_t ten;
   mpz_init(ten);
   mpz_ui_pow_ui(ten, 10, (unsigned long)(p < 0 ? -p : p));
@@ -410,21 +410,30 @@ bool literal_value(const std::string& s, mpq_t out) {
   return true;
 }
 
-bool small(const mpq_t q) {  // bounds the size of the rationals (memory and time)
-  return mpz_sizeinbase(mpq_numref(q), 2) + mpz_sizeinbase(mpq_denref(q), 2) < 400000;
+size_t bits(const mpq_t q) {  // the size of a rational, for the memory budget
+  return mpz_sizeinbase(mpq_numref(q), 2) + mpz_sizeinbase(mpq_denref(q), 2);
 }
 
 }  // namespace
 
 bool exactly_one_period(const Model& m, const Var& v) {
-  // Forward over the constant nodes below the bounds (children have smaller ids), no
-  // recursion: a chain of `constant` names may be long.
+  // Forward over the nodes the bounds use (children have smaller ids), no recursion: a
+  // chain of `constant` names may be long. At most 2^24 bits of rationals in all (a hostile
+  // model must not exhaust memory); beyond that the domain is refused.
   const int top = std::max(v.lo, v.hi);
+  std::vector<char> need(size_t(top) + 1, 0);
+  need[v.lo] = need[v.hi] = 1;
+  for (int id = top; id >= 0; --id) {
+    const Node& n = m.nodes[id];
+    if (need[id] && n.a >= 0) need[n.a] = 1;
+    if (need[id] && n.b >= 0) need[n.b] = 1;
+  }
   std::vector<Affine> val(size_t(top) + 1);
+  size_t budget = size_t(1) << 24;
   for (int id = 0; id <= top; ++id) {
     const Node& n = m.nodes[id];
     Affine& r = val[id];
-    if (n.dep) continue;
+    if (!need[id] || n.dep) continue;
     const Affine* x = n.a >= 0 ? &val[n.a] : nullptr;
     const Affine* y = n.b >= 0 ? &val[n.b] : nullptr;
     if ((x && !x->ok) || (y && !y->ok)) continue;
@@ -446,7 +455,9 @@ bool exactly_one_period(const Model& m, const Var& v) {
         break;
       default: r.ok = false;
     }
-    r.ok = r.ok && small(r.a) && small(r.b);
+    size_t used = r.ok ? bits(r.a) + bits(r.b) : 0;
+    if (used > budget) return false;
+    budget -= used;
   }
   const Affine &lo = val[v.lo], &hi = val[v.hi];
   if (!lo.ok || !hi.ok) return false;
