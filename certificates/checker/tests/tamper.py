@@ -502,6 +502,7 @@ def main():
     if len(sys.argv) > 5:  # after the mutations: json_rejected reads one of their files
         failed += verdict_cases(check, sys.argv[4], sys.argv[5], work)
         failed += solved_cases(check, sys.argv[4], work)
+    failed += work_limit_cases(check, work)
     return 1 if failed else 0
 
 
@@ -588,6 +589,42 @@ def solved_cases(check, aspects, work):
         ok = code == want and word in msg
         print("%s solved/%-48s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name, code,
                                                              want, word, msg[:110]))
+        failed += not ok
+    return failed
+
+
+def work_bomb(terms=200):
+    """A small certificate whose one discarded cell needs a refutation of 4095 boxes over a
+    model of 1400 nodes (s - s is not 0 in intervals until the boxes are narrow). With 10^5
+    nodes and 1000 such cells (1 MB) check_cert worked for days before the work limit."""
+    s = " + ".join("sin(x + %d) + sin(q + %d)" % (k, k) for k in range(1, terms + 1))
+    model = ("robot BOMB\npose x in [-2, 2]\ncommand q in [-2, 2]\nlet s = %s\n"
+             "equation %r + 0.001*(s - s) = 0" % (s, 0.000075 * terms))
+    b = model.encode()
+    lines = ["aspects-certificate 1", "tool aspects 0.1.0",
+             "model %d %s" % (len(b), hashlib.sha256(b).hexdigest()), model, "end-model",
+             "precision 53", "tau 0x1p+0", "eps 0x1p+0", "domain -0x1p+1 0x1p+1 -0x1p+1 0x1p+1",
+             "factors 0", "tree", "X hs", "end-tree 0", "links 0", "csncs 0", "claim filtered 0",
+             "claim lower-bound 0"]
+    lines.append("end %d" % (len(lines) + model.count("\n")))
+    return "\n".join(lines) + "\n"
+
+
+def work_limit_cases(check, work):
+    """The work limit grows with the certificate's size (2^29 units plus 2^10 per byte);
+    CHECK_CERT_WORK_BASE=20 lowers its base so that the test is quick."""
+    path = os.path.join(work, "work_bomb.cert")
+    with open(path, "w") as f:
+        f.write(work_bomb())
+    failed = 0
+    for name, env, want, word in (("work_limit_exceeded", "20", 1, "more work than the checker"),
+                                  ("work_limit_default", "29", 0, "VERIFIED")):
+        r = subprocess.run([check, "--quiet", path], stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, env=dict(os.environ, CHECK_CERT_WORK_BASE=env))
+        msg = r.stdout.decode(errors="replace").strip()
+        ok = r.returncode == want and word in msg
+        print("%s limit/%-49s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
+                                                            r.returncode, want, word, msg[:110]))
         failed += not ok
     return failed
 
