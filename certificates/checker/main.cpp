@@ -401,22 +401,35 @@ void Checker::run(const CheckOptions& o, Verdict& out) {
   if (claim < 0) malformed(rec(), "negative lower bound");
   if (I(rd.expect({"end"}, 1)[1]) != rec() - 1) malformed(rec(), "end: wrong record count");
   rd.expect_eof();
-  std::vector<std::pair<int, int>> M = neighbour_pairs(R, periodic, ev->two_pi);
+  // M may hold 2^22 + 64 per box pairs: a real subdivision has a few neighbours per box,
+  // while S records that share one IMAGE over many cells make M quadratic (10^5 boxes:
+  // 5·10^9 pairs, 40 GB) and would exhaust memory instead of being rejected.
+  std::vector<std::pair<int, int>> M;
+  try {
+    M = neighbour_pairs(R, periodic, ev->two_pi, (size_t(1) << 22) + 64 * R.size());
+  } catch (const std::length_error&) {
+    rejected(claim_rec, "the neighbourhood graph has more than 2^22 + 64 pairs per box");
+  }
   uint32_t all = 0, checkable = 0;  // factor bits: every factor, the checkable ones
   for (int i = 0; i < p; ++i) {
     all |= 1u << i;
     if (factors[i].kind != Factor::User) checkable |= 1u << i;
   }
-  long bound = lower_bound(R, M, all);
+  long bound = 0, checked = 0;
+  try {
+    bound = lower_bound(R, M, all);
+    // Without the user factors, which the checker cannot verify, the bound may be lower.
+    checked = user_factors ? lower_bound(R, M, checkable) : bound;
+  } catch (const std::length_error&) {
+    rejected(claim_rec, "too many sign classes for the neighbourhood graph (2^32 steps)");
+  }
   if (claim > bound)
     rejected(claim_rec, "claimed lower bound " + std::to_string(claim) + " exceeds the recomputed " + std::to_string(bound));
-  // Without the user factors, which the checker cannot verify, the bound may be lower.
-  long checked = user_factors ? lower_bound(R, M, checkable) : bound;
   if (!o.quiet)
     std::fprintf(stderr,
-                 "check_cert: %ld refutations (%ld boxes), %llu node evaluations, "
+                 "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M, "
                  "recomputed lower bound %ld, %.2f s\n",
-                 pr->refutations, pr->refute_boxes, (unsigned long long)ev->work, bound,
+                 pr->refutations, pr->refute_boxes, (unsigned long long)ev->work, M.size(), bound,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   out.verdict = "VERIFIED";
   if (claim > checked) {
