@@ -610,15 +610,46 @@ def work_bomb(terms=200):
     return "\n".join(lines) + "\n"
 
 
+def one_image_bomb(cells=4000):
+    """x = q over [-2, 2]^2 cut into `cells` slices of q, every slice a solution leaf with the
+    same box (cell_x, IMAGE) = [-2, 2]^2: every pair of boxes are neighbours, M has 8*10^6
+    pairs (10^5 slices: 5*10^9 pairs, 40 GB, from a 9 MB certificate)."""
+    model = "robot LINE\npose x in [-2, 2]\ncommand q in [-2, 2]\nequation x - q = 0"
+    b = model.encode()
+    lines = ["aspects-certificate 1", "tool aspects 0.1.0",
+             "model %d %s" % (len(b), hashlib.sha256(b).hexdigest()), model, "end-model",
+             "precision 53", "tau 0x1p+0", "eps 0x1p+0", "domain -0x1p+1 0x1p+1 -0x1p+1 0x1p+1",
+             "factors 0", "tree"]
+    leaf = " . %s %s -0x1p+1 0x1p+1 0x1p+0 0x1p+0 0x1p+0" % (hx(-2.5), hx(2.5))
+    for i in range(cells):
+        if i < cells - 1:
+            lines.append("B 1 %s" % hx(-2 + 4.0 * (i + 1) / cells))
+        lines.append("S %d%s" % (i, leaf))
+    lines += ["end-tree %d" % cells, "links 0", "csncs 0", "claim filtered 0", "claim lower-bound 1"]
+    lines.append("end %d" % (len(lines) + model.count("\n")))
+    return "\n".join(lines) + "\n"
+
+
 def work_limit_cases(check, work):
     """The work limit grows with the certificate's size (2^29 units plus 2^10 per byte);
     CHECK_CERT_WORK_BASE=20 lowers its base so that the test is quick."""
     path = os.path.join(work, "work_bomb.cert")
     with open(path, "w") as f:
         f.write(work_bomb())
+    quadratic = os.path.join(work, "one_image_bomb.cert")
+    with open(quadratic, "w") as f:
+        f.write(one_image_bomb())
     failed = 0
-    for name, env, want, word in (("work_limit_exceeded", "20", 1, "more work than the checker"),
-                                  ("work_limit_default", "29", 0, "VERIFIED")):
+    for name, env, want, word, path in (
+            ("work_limit_exceeded", "20", 1, "more work than the checker", path),
+            ("work_limit_default", "29", 0, "VERIFIED", path),
+            # VERIFIED before, with 4000 boxes; 10^5 would have exhausted memory.
+            ("neighbourhood_graph_quadratic", "29", 1, "2^22 + 64 pairs per box", quadratic),
+            ("neighbourhood_graph_fits", "29", 0, "VERIFIED", None)):
+        if path is None:
+            path = os.path.join(work, "one_image_small.cert")
+            with open(path, "w") as f:
+                f.write(one_image_bomb(200))
         r = subprocess.run([check, "--quiet", path], stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, env=dict(os.environ, CHECK_CERT_WORK_BASE=env))
         msg = r.stdout.decode(errors="replace").strip()
