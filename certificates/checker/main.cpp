@@ -149,7 +149,7 @@ void Checker::header() {
     // boxes holding no configuration of the declared domain count for the bound.
     if (x.periodic && !exactly_one_period(m, x))
       malformed(model_rec, "embedded model: periodic domain of '" + x.name +
-                               "' is not exactly one period (a*pi + b, rational a, b)");
+                               "' is not one period (exactly: a*pi + b, rational a, b)");
     periodic.push_back(x.periodic);
   }
   if (!(parse_real(rd.expect({"tau"}, 1)[1], rec()) >= 1)) malformed(rec(), "tau must be >= 1");

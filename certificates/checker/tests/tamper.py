@@ -564,9 +564,9 @@ def solved_cases(check, aspects, work):
     intervals: at 24 bits for 3.1415926, at 53 bits for 3.1415926535897932)."""
     cases = [
         ("periodic_domain_decimal_prec24", "seam24", "3.1415926",
-         lambda c: drop_links(c), (2, "exactly one period")),
+         lambda c: drop_links(c), (2, "not one period (exactly")),
         ("periodic_domain_decimal_prec53", "seam53", "3.1415926535897932", lambda c: c,
-         (2, "exactly one period")),
+         (2, "not one period (exactly")),
         # The same forms with pi: accepted (2 aspects is the truth on the whole circle).
         ("periodic_domain_pi_prec24", "seam24", "pi", lambda c: drop_links(c), (0, "VERIFIED")),
         ("periodic_domain_pi_prec53", "seam53", "pi", lambda c: c, (0, "VERIFIED")),
