@@ -15,7 +15,7 @@ libs="-lmpfi -lmpfr -lgmp"
 
 # Model parser.
 clang++ $flags -I"$root/core" "$here/fuzz_model_parser.cpp" \
-  "$root"/core/interval.cpp "$root"/core/expr.cpp "$root"/core/eval.cpp \
+  "$root"/core/interval.cpp "$root"/core/expr.cpp "$root"/core/eval.cpp "$root"/core/sincos.cpp \
   "$root"/core/model_parser.cpp "$root"/core/model_info.cpp "$root"/core/model_eval.cpp \
   "$root"/core/determinant_factors.cpp $libs -o "$work/fuzz_model_parser"
 mkdir -p "$work/corpus_model"
