@@ -46,6 +46,7 @@ const std::vector<std::string_view>& LineReader::next() {
   ssize_t n = getline(&line_buf_, &line_cap_, f_);
   ++line_;
   if (n <= 0) malformed(line_, "unexpected end of file");
+  bytes_ += uint64_t(n);
   EVP_DigestUpdate(md_, line_buf_, size_t(n));
   if (line_buf_[n - 1] != '\n') malformed(line_, "truncated record (no newline at end of file)");
   fields_.clear();
@@ -65,8 +66,16 @@ std::string LineReader::raw(size_t n) {
   std::string s(n, '\0');
   if (n && std::fread(&s[0], 1, n, f_) != n) malformed(line_ + 1, "model text truncated");
   EVP_DigestUpdate(md_, s.data(), n);
-  for (char c : s)
+  bytes_ += n + 1;
+  // Printable ASCII, tabs and newlines only, as the rest of the file: a '\r' (or another
+  // control or non-ASCII byte, e.g. a bidi override) inside a comment makes the model
+  // display differently from what the checker parses ("l = 1 #\rl = 2" shows l = 2).
+  for (char c : s) {
     if (c == '\n') ++line_;
+    unsigned char u = (unsigned char)c;
+    if (u != '\n' && u != '\t' && (u < 0x20 || u > 0x7e))
+      malformed(line_ + 1, "byte " + std::to_string(u) + " in the model text is not printable ASCII");
+  }
   int c = std::fgetc(f_);  // the model text is followed by exactly one '\n'
   if (c != '\n') malformed(line_ + 1, "model text not followed by a newline (wrong byte count?)");
   EVP_DigestUpdate(md_, "\n", 1);

@@ -39,6 +39,7 @@ class LineReader {
   std::string raw(size_t n);
   void expect_eof();           // nothing may follow the last record
   long record() const { return line_; }  // number of the record read last
+  uint64_t bytes() const { return bytes_; }  // bytes read so far
   std::string file_sha256();   // after expect_eof
 
  private:
@@ -47,6 +48,7 @@ class LineReader {
   char* line_buf_ = nullptr;
   size_t line_cap_ = 0;
   long line_ = 0;
+  uint64_t bytes_ = 0;
   std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
 };
 

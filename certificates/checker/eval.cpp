@@ -202,6 +202,7 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
 // undefined (its value is then meaningless). Proof mode stops at 1, Refute mode at 2, Truth
 // mode evaluates every node.
 bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
+  charge(prog.size());
   for (int id : prog) {
     const Node& n = m_.nodes[id];
     Ival& r = val_[id];
@@ -240,6 +241,7 @@ int Evaluator::feasible(const Ival* box) {
 bool Evaluator::eval_ad(const std::vector<int>& prog, const Ival* box, uint64_t dirs) {
   dirs_ = dirs;
   if (!eval(prog, box, Mode::Proof)) return false;
+  charge(prog.size());
   for (int id : prog)
     if (!derive(id)) return false;
   return true;
@@ -327,6 +329,7 @@ bool Evaluator::hc4(int eq, Ival* box) {
   if (!eval(prog, box, Mode::Refute)) return false;
   mpfi_set_si(t1_, 0);
   if (!val_[m_.eqs[eq]].meet(t1_)) return false;
+  charge(prog.size());
   for (auto it = prog.rbegin(); it != prog.rend(); ++it)
     if (!backward(*it, box)) return false;
   return true;

@@ -14,6 +14,11 @@ namespace cc {
 
 enum class Mode { Proof, Refute, Truth };
 
+// Thrown when a check needs more work than the checker allows (Evaluator::work_limit).
+struct WorkLimit : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class Evaluator {
  public:
   explicit Evaluator(const Model& m);
@@ -39,8 +44,17 @@ class Evaluator {
   std::vector<int> all_eqs, all_atoms;           // program of every equation, of every atom
   std::vector<std::vector<int>> eq_prog, factor_prog;
   Ival two_pi;
+  // Node evaluations (forward, derivative, backward) so far. Past `work_limit`, eval(),
+  // eval_ad() and hc4() throw WorkLimit: one refutation may bisect 4096 boxes of a model of
+  // 10^5 nodes, so without a limit a small hostile certificate keeps the checker busy for
+  // days. main.cpp lets the limit grow with the bytes read.
+  uint64_t work = 0, work_limit = UINT64_MAX;
 
  private:
+  void charge(size_t nodes) {
+    if ((work += nodes) > work_limit)
+      throw WorkLimit("the check needs more work than the checker allows for its size");
+  }
   int apply(int id, Ival& r, const Ival* a, const Ival* b);
   int truth(int formula) const;
   void trig(bool cosine, int child, const Ival& a, Ival& r);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <stdexcept>
 
 namespace cc {
 
@@ -26,7 +27,7 @@ void UnionFind::unite(int a, int b) {
 }
 
 std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::vector<bool>& periodic,
-                                                 const Ival& two_pi) {
+                                                 const Ival& two_pi, size_t max_pairs) {
   const int nv = R.nv;
   const size_t N = R.size();
   std::vector<std::pair<int, int>> out;
@@ -81,6 +82,7 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
           meet = x[0] <= s[1] && s[0] <= x[1];
         }
       }
+      if (meet && out.size() >= max_pairs) throw std::length_error("neighbourhood graph");
       if (meet) out.emplace_back(a, b);
     }
   return out;
@@ -96,6 +98,10 @@ long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, u
     if (R.solution[b] && ((R.pos[b] | R.neg[b]) & full) == full) classes.push_back(R.pos[b] & full);
   std::sort(classes.begin(), classes.end());
   classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+  // One union-find over M per class: up to 2^20 classes (p = 20 user factors) on 10^5
+  // boxes would take hours. A real certificate has a handful of classes.
+  if (double(classes.size()) * double(M.size() + N) > double(uint64_t(1) << 32))
+    throw std::length_error("sign classes");
   UnionFind uf;
   std::vector<uint8_t> compat(N), counted(N);
   long total = 0;

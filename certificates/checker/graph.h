@@ -30,12 +30,14 @@ struct OutBoxes {
 
 // Pairs (a, b), a < b, such that for some shift k (k_v ∈ {−1, 0, 1} on periodic variables)
 // a meets b + 2πk with the shifted bounds rounded outward; a superset of the pairs that
-// share a point modulo 2π.
+// share a point modulo 2π. Throws std::length_error beyond `max_pairs` pairs: boxes that
+// all overlap (one IMAGE for many cells) would make M quadratic in memory.
 std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::vector<bool>& periodic,
-                                                 const Ival& two_pi);
+                                                 const Ival& two_pi, size_t max_pairs = SIZE_MAX);
 // Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
 // with s, joined by M) holding a solution box whose signs are all verified and equal s.
-// Only the factors whose bit is set in `use` separate (the others are ignored).
+// Only the factors whose bit is set in `use` separate (the others are ignored). Throws
+// std::length_error when classes × (pairs + boxes) exceeds 2^32.
 long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, uint32_t use);
 // Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
 long filtered_count(const std::vector<int64_t>& sizes);

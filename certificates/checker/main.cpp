@@ -6,7 +6,9 @@
 // verification (REJECTED) or out of memory; 2 on a malformed file (MALFORMED) or usage;
 // 3 when every proof verified but the claimed bound needs a user-supplied factor
 // (UNCHECKED; 0 with --trust-factors). `--json` prints the verdict as one JSON object.
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <memory>
 #include <new>
@@ -38,6 +40,17 @@ struct Checker {
 
   explicit Checker(FILE* f) : rd(f) {}
   long rec() const { return rd.record(); }
+  // The work the check may take grows with the bytes read: 2^29 units plus 2^10 per byte, a
+  // unit being one node evaluation weighted by the precision (prec/64 + 2 limbs, as the
+  // memory limit). Real certificates need a few units per byte; a hostile one (a model of
+  // 10^5 nodes, refutations that bisect 4096 boxes) is stopped within minutes, not days.
+  // CHECK_CERT_WORK_BASE (log2 of the base, 10..40) lowers it for the tests, or raises it;
+  // either way it changes how long the checker may work, never what it accepts.
+  void budget() {
+    const uint64_t weight = uint64_t(mpfr_get_default_prec() / 64 + 2);
+    ev->work_limit = ((uint64_t(1) << work_base) + (uint64_t(1) << 10) * rd.bytes()) / weight;
+  }
+  int work_base = 29;
   [[noreturn]] void reject(const std::string& why) { rejected(rec(), why); }
   int64_t I(std::string_view s) { return parse_int(s, rec()); }
   void count(const Fields& f, size_t k) {
@@ -125,16 +138,18 @@ void Checker::header() {
   pr.reset(new Prover(*ev));
   n = m.n(), nv = int(m.vars.size());
   dlo.resize(nv), dhi.resize(nv);
-  Ival w;
   for (int v = 0; v < nv; ++v) {
     const Var& x = m.vars[v];
     if (!ev->constant(x.lo, dlo[v]) || !ev->constant(x.hi, dhi[v]))
       malformed(model_rec, "embedded model: domain bound of '" + x.name + "' is not a finite number");
     if (mpfr_cmp(dlo[v].L(), dhi[v].R()) > 0 || mpfr_cmp(dlo[v].R(), dhi[v].L()) > 0)
       malformed(model_rec, "embedded model: empty or reversed domain of '" + x.name + "'");
-    mpfi_sub(w, dhi[v], dlo[v]);
-    if (x.periodic && (mpfr_cmp(w.L(), ev->two_pi.R()) > 0 || mpfr_cmp(ev->two_pi.L(), w.R()) > 0))
-      malformed(model_rec, "embedded model: periodic domain of '" + x.name + "' is not one period");
+    // Exactly, not by intervals: `[-3.1415926, 3.1415926] periodic` passes an interval test at
+    // 24 bits (and a longer decimal at any precision), leaves a gap at the seam, and then
+    // boxes holding no configuration of the declared domain count for the bound.
+    if (x.periodic && !exactly_one_period(m, x))
+      malformed(model_rec, "embedded model: periodic domain of '" + x.name +
+                               "' is not one period (exactly: a*pi + b, rational a, b)");
     periodic.push_back(x.periodic);
   }
   if (!(parse_real(rd.expect({"tau"}, 1)[1], rec()) >= 1)) malformed(rec(), "tau must be >= 1");
@@ -236,6 +251,7 @@ void Checker::tree() {
   std::vector<std::vector<double>> stack{root};  // depth-first preorder, left child on top
   for (;;) {
     Fields f = rd.next();
+    budget();
     if (f[0] == "end-tree") {
       count(f, 2);
       if (!stack.empty()) reject("the search tree leaves " + std::to_string(stack.size()) + " cell(s) uncovered");
@@ -245,7 +261,7 @@ void Checker::tree() {
     if (stack.empty()) malformed(rec(), "expected 'end-tree': the search tree is complete");
     std::vector<double> cell = std::move(stack.back());
     stack.pop_back();
-    for (; f[0] == "P"; f = rd.next()) {  // contractions: refute both closed slabs
+    for (; f[0] == "P"; f = rd.next(), budget()) {  // contractions: refute both closed slabs
       count(f, 4);
       long v = index(f[1], nv);
       std::vector<double> lh = reals(f, 2, 2, true), slab = cell;
@@ -300,6 +316,7 @@ void Checker::link_section(UnionFind& uf) {
   Ival t;
   for (int64_t e = 0; e < total; ++e) {
     const Fields& f = rd.next();
+    budget();
     if (f[0] != "K") malformed(rec(), "expected a K record (" + std::to_string(total) + " links announced)");
     count(f, 4 + 3 * size_t(n) + size_t(n) * n);
     long a = index(f[1], N), b = index(f[2], N);
@@ -347,6 +364,8 @@ void Checker::link_section(UnionFind& uf) {
 
 void Checker::run(const CheckOptions& o, Verdict& out) {
   auto t0 = std::chrono::steady_clock::now();
+  if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
+    work_base = std::max(10, std::min(40, std::atoi(e)));
   header();
   tree();
   UnionFind uf;
@@ -382,20 +401,35 @@ void Checker::run(const CheckOptions& o, Verdict& out) {
   if (claim < 0) malformed(rec(), "negative lower bound");
   if (I(rd.expect({"end"}, 1)[1]) != rec() - 1) malformed(rec(), "end: wrong record count");
   rd.expect_eof();
-  std::vector<std::pair<int, int>> M = neighbour_pairs(R, periodic, ev->two_pi);
+  // M may hold 2^22 + 64 per box pairs: a real subdivision has a few neighbours per box,
+  // while S records that share one IMAGE over many cells make M quadratic (10^5 boxes:
+  // 5·10^9 pairs, 40 GB) and would exhaust memory instead of being rejected.
+  std::vector<std::pair<int, int>> M;
+  try {
+    M = neighbour_pairs(R, periodic, ev->two_pi, (size_t(1) << 22) + 64 * R.size());
+  } catch (const std::length_error&) {
+    rejected(claim_rec, "the neighbourhood graph has more than 2^22 + 64 pairs per box");
+  }
   uint32_t all = 0, checkable = 0;  // factor bits: every factor, the checkable ones
   for (int i = 0; i < p; ++i) {
     all |= 1u << i;
     if (factors[i].kind != Factor::User) checkable |= 1u << i;
   }
-  long bound = lower_bound(R, M, all);
+  long bound = 0, checked = 0;
+  try {
+    bound = lower_bound(R, M, all);
+    // Without the user factors, which the checker cannot verify, the bound may be lower.
+    checked = user_factors ? lower_bound(R, M, checkable) : bound;
+  } catch (const std::length_error&) {
+    rejected(claim_rec, "too many sign classes for the neighbourhood graph (2^32 steps)");
+  }
   if (claim > bound)
     rejected(claim_rec, "claimed lower bound " + std::to_string(claim) + " exceeds the recomputed " + std::to_string(bound));
-  // Without the user factors, which the checker cannot verify, the bound may be lower.
-  long checked = user_factors ? lower_bound(R, M, checkable) : bound;
   if (!o.quiet)
-    std::fprintf(stderr, "check_cert: %ld refutations (%ld boxes), recomputed lower bound %ld, %.2f s\n",
-                 pr->refutations, pr->refute_boxes, bound,
+    std::fprintf(stderr,
+                 "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M, "
+                 "recomputed lower bound %ld, %.2f s\n",
+                 pr->refutations, pr->refute_boxes, (unsigned long long)ev->work, M.size(), bound,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   out.verdict = "VERIFIED";
   if (claim > checked) {
@@ -421,9 +455,16 @@ void Checker::run(const CheckOptions& o, Verdict& out) {
 
 int cc::check_certificate(FILE* f, const CheckOptions& o, Verdict& out) {
   out = Verdict();
+  std::unique_ptr<Checker> c;
   try {
-    Checker(f).run(o, out);
+    c.reset(new Checker(f));
+    c->run(o, out);
     return out.verdict == "VERIFIED" ? kVerified : kUserFactors;
+  } catch (const WorkLimit& e) {  // a limit of the checker: rejected, as out of memory
+    out.verdict = "REJECTED";
+    out.record = c ? c->rec() : 0;
+    out.reason = e.what();
+    return kRejected;
   } catch (const CertError& e) {
     out.verdict = e.malformed ? "MALFORMED" : "REJECTED";
     out.record = e.record;

@@ -11,6 +11,9 @@
 // 2π shifts of links and of the neighbourhood graph are sound).
 #include "model.h"
 
+#include <gmp.h>
+
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <set>
@@ -365,5 +368,103 @@ class Parser {
 }  // namespace
 
 Model parse_model(const std::string& text) { return Parser(text).run(); }
+
+}  // namespace cc
+
+namespace cc {
+namespace {
+
+// a·π + b with exact rationals; `ok` false when the node is not of that form (or too big).
+struct Affine {
+  mpq_t a, b;
+  bool ok = false;
+  Affine() { mpq_init(a), mpq_init(b); }
+  ~Affine() { mpq_clear(a), mpq_clear(b); }
+  Affine(const Affine&) = delete;
+  Affine& operator=(const Affine&) = delete;
+};
+
+// The exact value of a decimal literal (digits, optional '.', optional e[+-]digits).
+bool literal_value(const std::string& s, mpq_t out) {
+  size_t e = s.find_first_of("eE");
+  std::string digits, frac_part;
+  long frac = 0, exp10 = 0;
+  for (size_t i = 0; i < std::min(e, s.size()); ++i)
+    if (s[i] != '.') digits += s[i], frac += s.find('.') < i;
+  if (e != std::string::npos) {
+    std::string x = s.substr(e + 1);
+    if (x.size() > 7) return false;  // |exponent| < 10^6: the rational stays small
+    exp10 = std::stol(x);
+  }
+  long p = exp10 - frac;
+  if (p > 10000 || p < -10000 || digits.size() > 10000) return false;
+  mpz_t ten;
+  mpz_init(ten);
+  mpz_ui_pow_ui(ten, 10, (unsigned long)(p < 0 ? -p : p));
+  mpq_set_str(out, digits.c_str(), 10);
+  mpq_canonicalize(out);
+  if (p >= 0) mpz_mul(mpq_numref(out), mpq_numref(out), ten);
+  else mpz_mul(mpq_denref(out), mpq_denref(out), ten);
+  mpq_canonicalize(out);
+  mpz_clear(ten);
+  return true;
+}
+
+size_t bits(const mpq_t q) {  // the size of a rational, for the memory budget
+  return mpz_sizeinbase(mpq_numref(q), 2) + mpz_sizeinbase(mpq_denref(q), 2);
+}
+
+}  // namespace
+
+bool exactly_one_period(const Model& m, const Var& v) {
+  // Forward over the nodes the bounds use (children have smaller ids), no recursion: a
+  // chain of `constant` names may be long. At most 2^24 bits of rationals in all (a hostile
+  // model must not exhaust memory); beyond that the domain is refused.
+  const int top = std::max(v.lo, v.hi);
+  std::vector<char> need(size_t(top) + 1, 0);
+  need[v.lo] = need[v.hi] = 1;
+  for (int id = top; id >= 0; --id) {
+    const Node& n = m.nodes[id];
+    if (need[id] && n.a >= 0) need[n.a] = 1;
+    if (need[id] && n.b >= 0) need[n.b] = 1;
+  }
+  std::vector<Affine> val(size_t(top) + 1);
+  size_t budget = size_t(1) << 24;
+  for (int id = 0; id <= top; ++id) {
+    const Node& n = m.nodes[id];
+    Affine& r = val[id];
+    if (!need[id] || n.dep) continue;
+    const Affine* x = n.a >= 0 ? &val[n.a] : nullptr;
+    const Affine* y = n.b >= 0 ? &val[n.b] : nullptr;
+    if ((x && !x->ok) || (y && !y->ok)) continue;
+    r.ok = true;
+    switch (n.op) {
+      case Op::Const: r.ok = literal_value(m.literals[n.k], r.b); break;
+      case Op::Pi: mpq_set_ui(r.a, 1, 1); break;
+      case Op::Add: mpq_add(r.a, x->a, y->a), mpq_add(r.b, x->b, y->b); break;
+      case Op::Sub: mpq_sub(r.a, x->a, y->a), mpq_sub(r.b, x->b, y->b); break;
+      case Op::Neg: mpq_neg(r.a, x->a), mpq_neg(r.b, x->b); break;
+      case Op::Mul:  // one factor must be rational (no π²)
+        if (mpq_sgn(y->a) == 0) mpq_mul(r.a, x->a, y->b), mpq_mul(r.b, x->b, y->b);
+        else if (mpq_sgn(x->a) == 0) mpq_mul(r.a, y->a, x->b), mpq_mul(r.b, y->b, x->b);
+        else r.ok = false;
+        break;
+      case Op::Div:  // by a nonzero rational only
+        if (mpq_sgn(y->a) != 0 || mpq_sgn(y->b) == 0) r.ok = false;
+        else mpq_div(r.a, x->a, y->b), mpq_div(r.b, x->b, y->b);
+        break;
+      default: r.ok = false;
+    }
+    size_t used = r.ok ? bits(r.a) + bits(r.b) : 0;
+    if (used > budget) return false;
+    budget -= used;
+  }
+  const Affine &lo = val[v.lo], &hi = val[v.hi];
+  if (!lo.ok || !hi.ok) return false;
+  Affine w;
+  mpq_sub(w.a, hi.a, lo.a);
+  mpq_sub(w.b, hi.b, lo.b);
+  return mpq_cmp_ui(w.a, 2, 1) == 0 && mpq_sgn(w.b) == 0;
+}
 
 }  // namespace cc

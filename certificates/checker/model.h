@@ -57,4 +57,10 @@ struct ModelError : std::runtime_error {
 // Parses the model language; throws ModelError("LINE:COL: message").
 Model parse_model(const std::string& text);
 
+// True when the declared domain of v is exactly one period: both bounds are a·π + b with
+// exact rationals a, b (decimal literals, pi, +, -, and * or / by a rational) and
+// hi − lo = 2π exactly. An interval test cannot decide this: a decimal bound close enough
+// to π passes it at any fixed precision, and leaves a gap at the seam.
+bool exactly_one_period(const Model& m, const Var& v);
+
 }  // namespace cc

@@ -364,6 +364,15 @@ def mutations_real(base):
         ("model_name_forging_verdict",
          lambda c: model_edit(c, "robot", "robot PRRP csncs=9 lower_bound=99"),
          (0, 'lower_bound=4 checked_lower_bound=4 robot="PRRPcsncs=9lower_bound=99"')),
+        # A '\r' in a comment: a terminal shows 'constant l = 2 #', the checker reads l = 1.
+        # VERIFIED before (the model text was exempt from the ASCII rule).
+        ("model_cr_in_comment_displays_another_model",
+         lambda c: model_edit(c, "constant l", "constant l = 1 #\rconstant l = 2"),
+         (2, "byte 13 in the model text")),
+        # A bidi override in a comment (Trojan Source) likewise: VERIFIED before.
+        ("model_bidi_override_in_comment",
+         lambda c: model_edit(c, "constant a", "constant a = 0 # \u202e 2 = a tnatsnoc"),
+         (2, "not printable ASCII")),
     ]
 
 
@@ -492,6 +501,8 @@ def main():
     print("%d mutations, %d failed (bases: %s)" % (len(cases), failed, ", ".join(b[1] for b in bases)))
     if len(sys.argv) > 5:  # after the mutations: json_rejected reads one of their files
         failed += verdict_cases(check, sys.argv[4], sys.argv[5], work)
+        failed += solved_cases(check, sys.argv[4], work)
+    failed += work_limit_cases(check, work)
     return 1 if failed else 0
 
 
@@ -526,6 +537,125 @@ def verdict_cases(check, aspects, robots, work):
             ok = json.loads(msg)["exit"] == want
         print("%s verdict/%-47s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
                                                               r.returncode, want, word, msg[:110]))
+        failed += not ok
+    return failed
+
+
+# Models of their own for the forgeries below, solved by ASPECTS with these options.
+SEAM = "robot SEAM\npose    x in %s\ncommand q in [-pi, pi] periodic\nequation x - sin(q) = 0\n"
+SOLVED = {"seam24": (SEAM % "[-0.00000001, 0.00000001]", ["--prec", "24", "--eps", "1e-9"]),
+          "seam53": (SEAM % "[0, 0]", ["--eps", "1e-3"])}
+
+
+def drop_links(c):
+    """No links and no CSNCs: the lower bound does not use them."""
+    i, j = c.find("links")[0], c.find("claim")[0]
+    c.lines[i:j] = ["links 0", "csncs 0"]
+    c.lines[c.find("claim")[0]] = "claim filtered 0"
+    return c.fix_end()
+
+
+def solved_cases(check, aspects, work):
+    """A periodic domain written with decimals close to pi is not one period: the declared
+    domain misses a sliver at the seam. x = sin(q) has a second branch near q = pi, inside
+    that sliver, so the truth is 1 aspect; the certificate (of the [-pi, pi] model, whose
+    root cell is the same double interval) claims 2. Before the exact test of the periodic
+    domain, check_cert printed VERIFIED lower_bound=2 for both (the width test passed by
+    intervals: at 24 bits for 3.1415926, at 53 bits for 3.1415926535897932)."""
+    cases = [
+        ("periodic_domain_decimal_prec24", "seam24", "3.1415926",
+         lambda c: drop_links(c), (2, "not one period (exactly")),
+        ("periodic_domain_decimal_prec53", "seam53", "3.1415926535897932", lambda c: c,
+         (2, "not one period (exactly")),
+        # The same forms with pi: accepted (2 aspects is the truth on the whole circle).
+        ("periodic_domain_pi_prec24", "seam24", "pi", lambda c: drop_links(c), (0, "VERIFIED")),
+        ("periodic_domain_pi_prec53", "seam53", "pi", lambda c: c, (0, "VERIFIED")),
+    ]
+    failed = 0
+    for name, model, bound, fn, (want, word) in cases:
+        text, opts = SOLVED[model]
+        out = os.path.join(work, model)
+        if not os.path.exists(os.path.join(out, "aspects.cert")):
+            with open(out + ".robot", "w") as f:
+                f.write(text)
+            subprocess.run([aspects, "solve", out + ".robot", "--out", out, "--quiet"] + opts,
+                           check=True)
+        c = fn(Cert(open(os.path.join(out, "aspects.cert")).read()))
+        c.lines[model_line(c, "command q")] = "command q in [-%s, %s] periodic" % (bound, bound)
+        path = os.path.join(work, "solved__%s.cert" % name)
+        with open(path, "w") as f:
+            f.write(c.rehash().text())
+        code, msg = run(check, path)
+        ok = code == want and word in msg
+        print("%s solved/%-48s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name, code,
+                                                             want, word, msg[:110]))
+        failed += not ok
+    return failed
+
+
+def work_bomb(terms=200):
+    """A small certificate whose one discarded cell needs a refutation of 4095 boxes over a
+    model of 1400 nodes (s - s is not 0 in intervals until the boxes are narrow). With 10^5
+    nodes and 1000 such cells (1 MB) check_cert worked for days before the work limit."""
+    s = " + ".join("sin(x + %d) + sin(q + %d)" % (k, k) for k in range(1, terms + 1))
+    model = ("robot BOMB\npose x in [-2, 2]\ncommand q in [-2, 2]\nlet s = %s\n"
+             "equation %r + 0.001*(s - s) = 0" % (s, 0.000075 * terms))
+    b = model.encode()
+    lines = ["aspects-certificate 1", "tool aspects 0.1.0",
+             "model %d %s" % (len(b), hashlib.sha256(b).hexdigest()), model, "end-model",
+             "precision 53", "tau 0x1p+0", "eps 0x1p+0", "domain -0x1p+1 0x1p+1 -0x1p+1 0x1p+1",
+             "factors 0", "tree", "X hs", "end-tree 0", "links 0", "csncs 0", "claim filtered 0",
+             "claim lower-bound 0"]
+    lines.append("end %d" % (len(lines) + model.count("\n")))
+    return "\n".join(lines) + "\n"
+
+
+def one_image_bomb(cells=4000):
+    """x = q over [-2, 2]^2 cut into `cells` slices of q, every slice a solution leaf with the
+    same box (cell_x, IMAGE) = [-2, 2]^2: every pair of boxes are neighbours, M has 8*10^6
+    pairs (10^5 slices: 5*10^9 pairs, 40 GB, from a 9 MB certificate)."""
+    model = "robot LINE\npose x in [-2, 2]\ncommand q in [-2, 2]\nequation x - q = 0"
+    b = model.encode()
+    lines = ["aspects-certificate 1", "tool aspects 0.1.0",
+             "model %d %s" % (len(b), hashlib.sha256(b).hexdigest()), model, "end-model",
+             "precision 53", "tau 0x1p+0", "eps 0x1p+0", "domain -0x1p+1 0x1p+1 -0x1p+1 0x1p+1",
+             "factors 0", "tree"]
+    leaf = " . %s %s -0x1p+1 0x1p+1 0x1p+0 0x1p+0 0x1p+0" % (hx(-2.5), hx(2.5))
+    for i in range(cells):
+        if i < cells - 1:
+            lines.append("B 1 %s" % hx(-2 + 4.0 * (i + 1) / cells))
+        lines.append("S %d%s" % (i, leaf))
+    lines += ["end-tree %d" % cells, "links 0", "csncs 0", "claim filtered 0", "claim lower-bound 1"]
+    lines.append("end %d" % (len(lines) + model.count("\n")))
+    return "\n".join(lines) + "\n"
+
+
+def work_limit_cases(check, work):
+    """The work limit grows with the certificate's size (2^29 units plus 2^10 per byte);
+    CHECK_CERT_WORK_BASE=20 lowers its base so that the test is quick."""
+    path = os.path.join(work, "work_bomb.cert")
+    with open(path, "w") as f:
+        f.write(work_bomb())
+    quadratic = os.path.join(work, "one_image_bomb.cert")
+    with open(quadratic, "w") as f:
+        f.write(one_image_bomb())
+    failed = 0
+    for name, env, want, word, path in (
+            ("work_limit_exceeded", "20", 1, "more work than the checker", path),
+            ("work_limit_default", "29", 0, "VERIFIED", path),
+            # VERIFIED before, with 4000 boxes; 10^5 would have exhausted memory.
+            ("neighbourhood_graph_quadratic", "29", 1, "2^22 + 64 pairs per box", quadratic),
+            ("neighbourhood_graph_fits", "29", 0, "VERIFIED", None)):
+        if path is None:
+            path = os.path.join(work, "one_image_small.cert")
+            with open(path, "w") as f:
+                f.write(one_image_bomb(200))
+        r = subprocess.run([check, "--quiet", path], stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, env=dict(os.environ, CHECK_CERT_WORK_BASE=env))
+        msg = r.stdout.decode(errors="replace").strip()
+        ok = r.returncode == want and word in msg
+        print("%s limit/%-49s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
+                                                            r.returncode, want, word, msg[:110]))
         failed += not ok
     return failed
 
