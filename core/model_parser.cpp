@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "eval.h"
+#include "exact_period.h"
 #include "model.h"
 
 namespace aspects {
@@ -34,12 +35,16 @@ class Lexer {
     int depth = 0;
     while (i_ < s_.size()) {
       char c = s_[i_];
+      check_printable(c);
       if (c == '#') {
-        while (i_ < s_.size() && s_[i_] != '\n') advance();
+        while (i_ < s_.size() && s_[i_] != '\n') {
+          check_printable(s_[i_]);
+          advance();
+        }
       } else if (c == '\n') {
         if (depth == 0) out.push_back({Tok::Newline, "\\n", line_, col_});
         advance();
-      } else if (c == ' ' || c == '\t' || c == '\r') {
+      } else if (c == ' ' || c == '\t') {
         advance();
       } else if (std::isalpha((unsigned char)c) || c == '_') {
         int l = line_, co = col_;
@@ -88,6 +93,16 @@ class Lexer {
   }
 
  private:
+  // The certificate embeds the model text and check_cert accepts only printable ASCII,
+  // tabs and newlines (a carriage return or a bidi control could make the text read
+  // differently from what is checked), comments included.
+  void check_printable(char c) const {
+    unsigned char u = static_cast<unsigned char>(c);
+    if (u == '\t' || u == '\n' || (u >= 0x20 && u <= 0x7e)) return;
+    throw ModelError(file_, line_, col_,
+                     "byte 0x" + hex(c) + " is not printable ASCII (only printable ASCII, "
+                     "tabs and newlines are allowed, comments included)");
+  }
   static std::string hex(char c) {
     const char* d = "0123456789abcdef";
     unsigned char u = (unsigned char)c;
@@ -255,10 +270,11 @@ class Parser {
     const Token& open = peek();
     expect_punct("[");
     const Token& lo_tok = peek();
-    Interval lo = constant_expr();
+    int lo_node = -1, hi_node = -1;
+    Interval lo = constant_expr(&lo_node);
     expect_punct(",");
     const Token& hi_tok = peek();
-    Interval hi = constant_expr();
+    Interval hi = constant_expr(&hi_node);
     expect_punct("]");
     Variable v;
     v.name = name.text;
@@ -274,13 +290,11 @@ class Parser {
     v.inner_hi = mpfr_get_d(&hi.get()->left, MPFR_RNDD);
     if (is_word("periodic")) {
       const Token& per = next();
-      // One period exactly: hi - lo must be able to equal 2*pi.
-      Interval width, two_pi;
-      mpfi_sub(width.get(), hi.get(), lo.get());
-      mpfi_const_pi(two_pi.get());
-      mpfi_mul_ui(two_pi.get(), two_pi.get(), 2);
-      if (!width.overlaps(two_pi))
-        fail(per, "periodic domain of '" + name.text + "' must be exactly one period (width 2*pi), width is " + width.str());
+      // One period exactly, decided on the bounds as written (core/exact_period.h); the
+      // independent checker applies the same rule.
+      if (!exactly_one_period(m_.dag, meanings_, lo_node, hi_node))
+        fail(per, "periodic domain of '" + name.text + "' must be exactly one period: bounds a*pi + b "
+                  "(a, b rational) with upper - lower = 2*pi exactly, e.g. [-pi, pi]");
       v.periodic = true;
     }
     (void)kw;
@@ -291,9 +305,10 @@ class Parser {
     var_tokens_.push_back(name);
   }
 
-  Interval constant_expr() {
+  Interval constant_expr(int* node_out = nullptr) {
     const Token& at = peek();
     int node = expr();
+    if (node_out) *node_out = node;
     if (!m_.dag.is_constant(node)) fail(at, "a domain bound must be a constant expression");
     Evaluator ev(m_.dag);
     ev.forward(m_.dag.closure({node}), Box{});
@@ -442,7 +457,7 @@ class Parser {
       // Beyond the double range counts as non-finite: boxes are stored as doubles.
       if (!v.bounded() || std::isinf(v.lo_down()) || std::isinf(v.hi_up()))
         fail(t, "number '" + t.text + "' is not finite");
-      return m_.dag.constant(v);
+      return remember_meaning(m_.dag.constant(v), t.text);
     }
     if (is_punct("(")) {
       ++p_;
@@ -455,7 +470,7 @@ class Parser {
     if (t.text == "pi") {
       Interval pi;
       mpfi_const_pi(pi.get());
-      return m_.dag.constant(pi);
+      return remember_meaning(m_.dag.constant(pi), "pi");
     }
     auto uf = unary_functions().find(t.text);
     if (uf != unary_functions().end()) {
@@ -546,6 +561,15 @@ class Parser {
   const std::string& file_;
   Model& m_;
   std::map<std::string, Name> names_;
+  ConstantMeanings meanings_;  // exact meaning of each literal and pi node, for periods
+
+  // The DAG shares constant nodes with equal enclosures: a node that two different
+  // texts reach has no single exact meaning (empty text).
+  int remember_meaning(int node, const std::string& text) {
+    auto [it, fresh] = meanings_.emplace(node, text);
+    if (!fresh && it->second != text) it->second.clear();
+    return node;
+  }
   std::vector<Token> var_tokens_;
   std::vector<Token> equation_tokens_;
 };
@@ -567,8 +591,14 @@ Box Model::initial_box() const {
 Model parse_model(const std::string& text, const std::string& file) {
   Model m;
   m.file = file;
-  m.source = text;
-  Parser(text, file, m).run();
+  // CRLF line endings are read as LF, and the model is kept (and embedded in the
+  // certificate) that way; any other carriage return is an error of the lexer.
+  std::string source;
+  source.reserve(text.size());
+  for (size_t i = 0; i < text.size(); ++i)
+    if (!(text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) source += text[i];
+  m.source = source;
+  Parser(m.source, file, m).run();
   return m;
 }
 
