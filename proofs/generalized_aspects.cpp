@@ -55,8 +55,8 @@ class AspectsSearch : public BranchAndPruneSteps {
       double lo = box[v].lo_down(), hi = box[v].hi_up();
       double gap_lo = margins::contraction_gap(chi - clo, lo);
       double gap_hi = margins::contraction_gap(chi - clo, hi);
-      lo = lo - gap_lo <= clo ? clo : std::nextafter(lo - gap_lo, -INFINITY);
-      hi = hi + gap_hi >= chi ? chi : std::nextafter(hi + gap_hi, INFINITY);
+      lo = lo - gap_lo <= clo ? clo : to_working_precision(std::nextafter(lo - gap_lo, -INFINITY), -1);
+      hi = hi + gap_hi >= chi ? chi : to_working_precision(std::nextafter(hi + gap_hi, INFINITY), +1);
       box[v].set_hull(lo, hi);
       if ((lo > clo || hi < chi) && sink_) sink_->contraction(v, lo, hi);
     }
@@ -71,6 +71,15 @@ class AspectsSearch : public BranchAndPruneSteps {
       return false;
     }
     return true;
+  }
+
+  // Below 53 bits a box's interval cannot hold every double: round a recorded bound
+  // outward to the working precision (down for a lower bound, up for an upper one), so
+  // that the record and the box the search goes on with are the same numbers.
+  double to_working_precision(double x, int direction) {
+    if (working_precision() >= 53) return x;
+    mpfr_set_d(&round_.get()->left, x, direction < 0 ? MPFR_RNDD : MPFR_RNDU);
+    return mpfr_get_d(&round_.get()->left, direction < 0 ? MPFR_RNDD : MPFR_RNDU);
   }
 
   void branched(int var, double at) override {
@@ -112,7 +121,7 @@ class AspectsSearch : public BranchAndPruneSteps {
   // sound enclosure (the checker's) can confirm it.
   static int sign_with_margin(const Interval& d) {
     double lo = d.lo_down(), hi = d.hi_up();
-    double margin = margins::sign_clearance * (hi - lo) + margins::sign_clearance_abs;
+    double margin = margins::sign_clearance() * (hi - lo) + margins::sign_clearance_abs;
     if (lo > margin) return 1;
     if (hi < -margin) return -1;
     return 0;
@@ -146,6 +155,7 @@ class AspectsSearch : public BranchAndPruneSteps {
   int n_, nv_;
   std::vector<int> factor_nodes_, factor_prog_;
   Box reported_, cell_;
+  Interval round_;  // scratch of to_working_precision
   std::vector<std::string> hints_;
   SolutionProof proof_;
   Truth pruned_truth_ = Truth::True;  // of the last box prune() kept

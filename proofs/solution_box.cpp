@@ -57,7 +57,7 @@ Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& 
   for (int j = 0; j < n; ++j) {
     int v = m_.command[j];
     const Interval& q = ex.inflated[j];
-    double margin = margins::image_widening * (q.hi_up() - q.lo_down());
+    double margin = margins::image_widening() * (q.hi_up() - q.lo_down());
     double lo = std::max(q.lo_down(), ex.image[j].lo_down() - margin);
     double hi = std::min(q.hi_up(), ex.image[j].hi_up() + margin);
     if (!m_.vars[v].periodic) {
