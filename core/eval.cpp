@@ -380,6 +380,10 @@ bool Evaluator::backward(int id, Box& box) {
       return a->intersect(t1_);
     case Op::Sin:
     case Op::Cos:
+      // The preimage costs an asin or acos and up to ten pieces; when the node narrowed
+      // by less than a tenth it rarely pays (skipping only contracts less: sound).
+      // RRRRR eps 0.1: 6 % less CPU for 1 % more boxes (bench/RESULTS.md).
+      if (r.width_up() >= 0.9 * fwd_[id].width_up()) return true;
       return project_periodic(n.op, r, *a);
     case Op::Tan:
       // The range check done by the parent's intersection is the (sound) projection kept.
