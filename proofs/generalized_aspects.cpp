@@ -55,9 +55,13 @@ class AspectsSearch : public BranchAndPruneSteps {
       double lo = box[v].lo_down(), hi = box[v].hi_up();
       double gap_lo = margins::contraction_gap(chi - clo, lo);
       double gap_hi = margins::contraction_gap(chi - clo, hi);
-      lo = lo - gap_lo <= clo ? clo : to_working_precision(std::nextafter(lo - gap_lo, -INFINITY), -1);
-      hi = hi + gap_hi >= chi ? chi : to_working_precision(std::nextafter(hi + gap_hi, INFINITY), +1);
+      lo = lo - gap_lo <= clo ? clo : std::nextafter(lo - gap_lo, -INFINITY);
+      hi = hi + gap_hi >= chi ? chi : std::nextafter(hi + gap_hi, INFINITY);
+      // Below 53 bits the box's interval rounds these outward to the working precision:
+      // record what it holds, so that the record and the search's box are the same.
       box[v].set_hull(lo, hi);
+      lo = box[v].lo_down();
+      hi = box[v].hi_up();
       if ((lo > clo || hi < chi) && sink_) sink_->contraction(v, lo, hi);
     }
     // Additional constraints (paper 5.4): a box where one certainly fails holds no
@@ -71,15 +75,6 @@ class AspectsSearch : public BranchAndPruneSteps {
       return false;
     }
     return true;
-  }
-
-  // Below 53 bits a box's interval cannot hold every double: round a recorded bound
-  // outward to the working precision (down for a lower bound, up for an upper one), so
-  // that the record and the box the search goes on with are the same numbers.
-  double to_working_precision(double x, int direction) {
-    if (working_precision() >= 53) return x;
-    mpfr_set_d(&round_.get()->left, x, direction < 0 ? MPFR_RNDD : MPFR_RNDU);
-    return mpfr_get_d(&round_.get()->left, direction < 0 ? MPFR_RNDD : MPFR_RNDU);
   }
 
   void branched(int var, double at) override {
@@ -155,7 +150,6 @@ class AspectsSearch : public BranchAndPruneSteps {
   int n_, nv_;
   std::vector<int> factor_nodes_, factor_prog_;
   Box reported_, cell_;
-  Interval round_;  // scratch of to_working_precision
   std::vector<std::string> hints_;
   SolutionProof proof_;
   Truth pruned_truth_ = Truth::True;  // of the last box prune() kept
