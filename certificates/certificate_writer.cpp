@@ -35,7 +35,7 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
   static char buffer[1 << 20];
   std::setvbuf(f_, buffer, _IOFBF, sizeof buffer);
   n_ = model.n();
-  line("aspects-certificate 1");
+  line("aspects-certificate 2");
   line(std::string("tool aspects ") + kToolVersion);
   line("model " + std::to_string(model.source.size()) + " " + sha256_hex(model.source));
   std::fwrite(model.source.data(), 1, model.source.size(), f_);
@@ -175,7 +175,9 @@ void TreeRecordFile::solution(int32_t id, const int8_t* s, const SolutionProof& 
   auto interval = [&](const Interval& x) { std::fprintf(f_, " %a %a", x.lo_down(), x.hi_up()); };
   for (const auto& q : proof.existence.inflated) interval(q);
   for (const auto& q : proof.existence.image) interval(q);
-  for (const auto* m : {&proof.existence.C, &proof.cx, &proof.cq})
+  const std::vector<double>* reals[] = {&proof.existence.C, &proof.cx, &proof.cq, &proof.dx,
+                                        &proof.dq};
+  for (const auto* m : reals)
     for (double c : *m) std::fprintf(f_, " %a", c);
   std::fputc('\n', f_);
 }

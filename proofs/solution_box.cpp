@@ -69,9 +69,11 @@ Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& 
     reported[v] = ex.image[j];
   }
   // P2 on the reported box, not on the cell: the iterate may have moved.
-  if (ev_.jacobian_x(reported, J_) != EvalStatus::Defined || !strongly_regular(J_, &proof.cx))
+  if (ev_.jacobian_x(reported, J_) != EvalStatus::Defined ||
+      !strongly_regular(J_, &proof.cx, &proof.dx))
     return Verdict::SingularFx;
-  if (ev_.jacobian_q(reported, J_) != EvalStatus::Defined || !strongly_regular(J_, &proof.cq))
+  if (ev_.jacobian_q(reported, J_) != EvalStatus::Defined ||
+      !strongly_regular(J_, &proof.cq, &proof.dq))
     return Verdict::SingularFq;
   if (constraints_.evaluate(reported) != Truth::True) return Verdict::ConstraintBoundary;
   return Verdict::Solution;

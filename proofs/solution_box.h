@@ -27,6 +27,7 @@ namespace aspects {
 struct SolutionProof {
   ExistenceProof existence;    // iteration (9) from the cell
   std::vector<double> cx, cq;  // preconditioners of the P2 tests of Fx and Fq
+  std::vector<double> dx, dq;  // their column weights (1 unless the unscaled test failed)
 };
 
 class SolutionBoxProver {

@@ -26,35 +26,85 @@ bool approximate_inverse(const IMatrix& A, std::vector<double>& C) {
   return true;
 }
 
-bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A) {
-  int n = A.rows();
-  Interval entry, term, off, diag;
+namespace {
+
+// M = C·[A], outward; false when an entry is unbounded.
+bool precondition(const std::vector<double>& C, const IMatrix& A, IMatrix& M) {
+  const int n = A.rows();
+  if (M.rows() != n) M = IMatrix(n, n);
+  Interval term;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      Interval& e = M(i, j);
+      mpfi_set_si(e.get(), 0);
+      for (int k = 0; k < n; ++k) {
+        mpfi_mul_d(term.get(), A(k, j).get(), C[size_t(i) * n + k]);
+        mpfi_add(e.get(), e.get(), term.get());
+      }
+      if (!e.bounded() || e.empty()) return false;
+    }
+  return true;
+}
+
+// Row-wise strict dominance of M·diag(D): mig(M_ii)·D_i > Σ_{j≠i} mag(M_ij)·D_j, compared
+// on the outward-rounded bounds (left end of the diagonal against the right end of the sum).
+bool dominant(const IMatrix& M, const std::vector<double>& D) {
+  const int n = M.rows();
+  Interval term, off, diag;
   for (int i = 0; i < n; ++i) {
     mpfi_set_si(off.get(), 0);
     for (int j = 0; j < n; ++j) {
-      mpfi_set_si(entry.get(), 0);
-      for (int k = 0; k < n; ++k) {
-        mpfi_mul_d(term.get(), A(k, j).get(), C[size_t(i) * n + k]);
-        mpfi_add(entry.get(), entry.get(), term.get());
-      }
-      if (!entry.bounded() || entry.empty()) return false;
-      mpfi_abs(term.get(), entry.get());
+      mpfi_abs(term.get(), M(i, j).get());
+      mpfi_mul_d(term.get(), term.get(), D[j]);
       if (i == j)
         mpfi_set(diag.get(), term.get());
       else
         mpfi_add(off.get(), off.get(), term.get());
     }
-    // mig(diag) is the left end of |diag|; it must exceed every possible off-sum.
     if (!(mpfr_cmp(&diag.get()->left, &off.get()->right) > 0)) return false;
   }
   return true;
 }
 
-bool strongly_regular(const IMatrix& A, std::vector<double>* C_out) {
-  std::vector<double> C;
-  if (!approximate_inverse(A, C)) return false;
-  bool ok = diagonally_dominant_after(C, A);
+// D = (I − G)^-1·1, G_ij = mag(M_ij) / mig(M_ii) off the diagonal (a choice in double:
+// dominant() verifies it). Then (I − G)·D = 1 > 0, i.e. G·D < D: the scaled rows dominate.
+bool column_weights(const IMatrix& M, std::vector<double>& D) {
+  const int n = M.rows();
+  Eigen::MatrixXd G = Eigen::MatrixXd::Identity(n, n);
+  for (int i = 0; i < n; ++i) {
+    const Interval& d = M(i, i);
+    double mig = d.lo_down() > 0 ? d.lo_down() : d.hi_up() < 0 ? -d.hi_up() : 0;
+    if (!(mig > 0)) return false;
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      double mag = std::max(std::fabs(M(i, j).lo_down()), std::fabs(M(i, j).hi_up()));
+      G(i, j) = -mag / mig;
+    }
+  }
+  Eigen::VectorXd w = G.fullPivLu().solve(Eigen::VectorXd::Ones(n));
+  D.resize(n);
+  for (int j = 0; j < n; ++j) {
+    if (!(w(j) > 0) || !std::isfinite(w(j))) return false;
+    D[j] = w(j);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A,
+                               const std::vector<double>& D) {
+  IMatrix M;
+  return precondition(C, A, M) && dominant(M, D);
+}
+
+bool strongly_regular(const IMatrix& A, std::vector<double>* C_out, std::vector<double>* D_out) {
+  std::vector<double> C, D(size_t(A.rows()), 1.0);
+  thread_local IMatrix M;  // scratch: no MPFI allocation per test
+  bool ok = approximate_inverse(A, C) && precondition(C, A, M) &&
+            (dominant(M, D) || (column_weights(M, D) && dominant(M, D)));
   if (C_out) *C_out = std::move(C);
+  if (D_out) *D_out = std::move(D);
   return ok;
 }
 

@@ -29,6 +29,7 @@ struct Checker {
   std::unique_ptr<Evaluator> ev;
   std::unique_ptr<Prover> pr;
   int n = 0, nv = 0, p = 0;
+  int version = 0;             // 1: P2 without column weights (D = 1); 2: with DX, DQ
   std::vector<Ival> dlo, dhi;  // enclosures of the declared bounds
   std::vector<bool> periodic;
   std::vector<Factor> factors;
@@ -109,7 +110,9 @@ struct Checker {
 void Checker::header() {
   const Fields* f = &rd.next();
   if (f->size() != 2 || (*f)[0] != "aspects-certificate") malformed(rec(), "not an aspects certificate");
-  if ((*f)[1] != "1") malformed(rec(), "unknown certificate version '" + std::string((*f)[1]) + "'");
+  std::string_view v = (*f)[1];
+  if (v != "1" && v != "2") malformed(rec(), "unknown certificate version '" + std::string(v) + "'");
+  version = v == "1" ? 1 : 2;
   rd.expect({"tool", "aspects"}, 1);
   f = &rd.expect({"model"}, 2);
   long model_rec = rec();
@@ -214,10 +217,18 @@ void Checker::store(std::string_view s, bool jac, const double* box, bool soluti
 
 void Checker::solution_leaf(const Fields& f, const std::vector<double>& cell) {
   const size_t nn = size_t(n) * n;
-  count(f, 3 + 4 * size_t(n) + 3 * nn);
+  const size_t weights = version == 1 ? 0 : 2 * size_t(n);
+  count(f, 3 + 4 * size_t(n) + 3 * nn + weights);
   std::vector<double> Q = reals(f, 3, 2 * n, true), img = reals(f, 3 + 2 * n, 2 * n, true),
                       C = reals(f, 3 + 4 * n, nn), CX = reals(f, 3 + 4 * n + nn, nn),
                       CQ = reals(f, 3 + 4 * n + 2 * nn, nn);
+  std::vector<double> DX(n, 1.0), DQ(n, 1.0);  // version 1: unscaled dominance
+  if (version == 2) {
+    DX = reals(f, 3 + 4 * n + 3 * nn, n);
+    DQ = reals(f, 3 + 5 * n + 3 * nn, n);
+  }
+  for (int j = 0; j < n; ++j)
+    if (!(DX[j] > 0) || !(DQ[j] > 0)) reject("P2: a column weight is not positive");
   std::vector<double> B = cell;  // the output box: the cell's poses, IMAGE's commands
   for (int j = 0; j < n; ++j) {
     int v = m.command[j];
@@ -241,7 +252,7 @@ void Checker::solution_leaf(const Fields& f, const std::vector<double>& cell) {
     if (!inside(pr->y[j], img[2 * j], img[2 * j + 1], false)) reject("P1: the Hansen-Sengupta image is not inside IMAGE");
   }
   pr->load(B.data());
-  if (const char* why = pr->regular(CX.data(), CQ.data())) reject(std::string("P2: ") + why);
+  if (const char* why = pr->regular(CX.data(), CQ.data(), DX.data(), DQ.data())) reject(std::string("P2: ") + why);
   if (ev->feasible(pr->box.data()) != 2) reject("inner test: a constraint is not True on the box" + show(B));
   store(f[2], true, B.data(), true);
   ++solutions;

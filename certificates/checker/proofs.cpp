@@ -139,9 +139,10 @@ bool Prover::jacobians() {
   return true;
 }
 
-// Row-wise strict diagonal dominance of C·J: mig(M_ii) > Σ_{j≠i} mag(M_ij), compared on
-// the outward-rounded bounds (left end of |M_ii| against the right end of the sum).
-bool Prover::dominant(const std::vector<Ival>& J, const double* C) {
+// Row-wise strict diagonal dominance of M = C·J·diag(D), D > 0 (then every real matrix in
+// J is nonsingular): mig(M_ii) > Σ_{j≠i} mag(M_ij), compared on the outward-rounded
+// bounds (left end of |M_ii| against the right end of the sum).
+bool Prover::dominant(const std::vector<Ival>& J, const double* C, const double* D) {
   product(J, C, A_);
   for (int i = 0; i < n_; ++i) {
     mpfi_set_si(t2_, 0);
@@ -149,18 +150,21 @@ bool Prover::dominant(const std::vector<Ival>& J, const double* C) {
       if (!A_[i * n_ + j].bounded()) return false;
       if (j == i) continue;
       mpfi_abs(t1_, A_[i * n_ + j]);
+      mpfi_mul_d(t1_, t1_, D[j]);
       mpfi_add(t2_, t2_, t1_);
     }
     mpfi_abs(t1_, A_[i * n_ + i]);
+    mpfi_mul_d(t1_, t1_, D[i]);
     if (!(mpfr_cmp(t1_.L(), t2_.R()) > 0)) return false;
   }
   return true;
 }
 
-const char* Prover::regular(const double* CX, const double* CQ) {
+const char* Prover::regular(const double* CX, const double* CQ, const double* DX,
+                            const double* DQ) {
   if (!jacobians()) return "Jacobian not defined on the box";
-  if (!dominant(Jx_, CX)) return "C_X*Fx is not strictly diagonally dominant";
-  if (!dominant(Jq_, CQ)) return "C_Q*Fq is not strictly diagonally dominant";
+  if (!dominant(Jx_, CX, DX)) return "C_X*Fx*D_X is not strictly diagonally dominant";
+  if (!dominant(Jq_, CQ, DQ)) return "C_Q*Fq*D_Q is not strictly diagonally dominant";
   return nullptr;
 }
 

@@ -27,8 +27,9 @@ class Prover {
   // (n lo/hi pairs), C row major. Returns nullptr on success, else why it failed.
   const char* newton(const double* Q, const double* C);
   std::vector<Ival> y;
-  // P2 on `box`: C_X·Fx and C_Q·Fq strictly diagonally dominant. Keeps the Jacobians.
-  const char* regular(const double* CX, const double* CQ);
+  // P2 on `box`: C_X·Fx·diag(D_X) and C_Q·Fq·diag(D_Q) strictly diagonally dominant
+  // (D positive). Keeps the Jacobians.
+  const char* regular(const double* CX, const double* CQ, const double* DX, const double* DQ);
   // Enclosure of a factor on `box`; false if not defined there. `jac` says whether the
   // Jacobians of `box` are already computed (by regular()).
   bool factor(const Factor& f, bool jac, Ival& out);
@@ -38,7 +39,7 @@ class Prover {
 
  private:
   bool jacobians();
-  bool dominant(const std::vector<Ival>& J, const double* C);
+  bool dominant(const std::vector<Ival>& J, const double* C, const double* D);
   bool contract(std::vector<Ival>& b);
   int hs_contract(std::vector<Ival>& b);
   bool refute_rec(std::vector<Ival>& b, int depth, int& budget);

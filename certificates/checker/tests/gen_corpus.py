@@ -438,7 +438,7 @@ def main():
     malformed = {
         "decimal_real": base.replace("B 0 " + hx(0.5), "B 0 0.5"),
         "double_space": base.replace("X eq1", "X  eq1"),
-        "wrong_version": base.replace("aspects-certificate 1", "aspects-certificate 2"),
+        "wrong_version": base.replace("aspects-certificate 1", "aspects-certificate 3"),
         "truncated": base[: len(base) // 2],
         "after_end": base + "garbage\n",
         "unknown_record": base.replace("X eq1", "Z eq1"),

@@ -305,7 +305,7 @@ def mutations_real(base):
         ("model_constant_changed", lambda c: model_changed(c, False), 1),
         ("model_constant_changed_rehashed", lambda c: model_changed(c, True), 1),
         ("model_unparsable_rehashed", model_unparsable, 2),
-        ("wrong_version", lambda c: edit(c, 0, "aspects-certificate 2"), 2),
+        ("wrong_version", lambda c: edit(c, 0, "aspects-certificate 3"), 2),
         ("truncated_mid_record", lambda c: c.text()[: len(c.text()) // 2], 2),
         ("truncated_at_record", lambda c: "".join(l + "\n" for l in c.lines[:-3]), 2),
         ("garbage_bytes", lambda c: c.text().replace("\nS ", "\nS \x00\xff", 1), 2),
@@ -459,7 +459,14 @@ def main():
                                      ("issue15_forgery_x2_narrowed",
                                       lambda c: model_edit(c, "pose    x2",
                                                            "pose    x2 in [0.5, 20]"),
-                                      (1, "root cell"))]),
+                                      (1, "root cell")),
+                                     # P2's column weights (format 2): the last 2n fields.
+                                     ("regularity_weight_not_positive",
+                                      lambda c: replace_first(c, "S", lambda f: f.__setitem__(
+                                          len(f) - 4, "-0x1p+0")), (1, "column weight")),
+                                     ("regularity_weight_inflated",
+                                      lambda c: replace_first(c, "S", lambda f: f.__setitem__(
+                                          len(f) - 4, "0x1p+40")), (1, "P2"))]),
                                  ("rrrrr_joint_limit", "0.5", mutations_constrained())):
             subprocess.run([aspects, "solve", os.path.join(robots, robot + ".robot"), "--eps", eps,
                             "--out", os.path.join(work, robot), "--quiet"], check=True)
