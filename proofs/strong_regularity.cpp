@@ -1,30 +1,8 @@
 #include "strong_regularity.h"
 
-#include <Eigen/Dense>
-#include <cmath>
+#include "preconditioner.h"
 
 namespace aspects {
-
-bool approximate_inverse(const IMatrix& A, std::vector<double>& C) {
-  int n = A.rows();
-  Eigen::MatrixXd M(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      double m = A(i, j).mid();
-      if (!std::isfinite(m)) return false;
-      M(i, j) = m;
-    }
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
-  if (!lu.isInvertible()) return false;
-  Eigen::MatrixXd inv = lu.inverse();
-  C.resize(size_t(n) * n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      if (!std::isfinite(inv(i, j))) return false;
-      C[size_t(i) * n + j] = inv(i, j);
-    }
-  return true;
-}
 
 bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A) {
   int n = A.rows();
@@ -32,11 +10,7 @@ bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A) {
   for (int i = 0; i < n; ++i) {
     mpfi_set_si(off.get(), 0);
     for (int j = 0; j < n; ++j) {
-      mpfi_set_si(entry.get(), 0);
-      for (int k = 0; k < n; ++k) {
-        mpfi_mul_d(term.get(), A(k, j).get(), C[size_t(i) * n + k]);
-        mpfi_add(entry.get(), entry.get(), term.get());
-      }
+      preconditioned_entry(C, A, i, j, entry, term);
       if (!entry.bounded() || entry.empty()) return false;
       mpfi_abs(term.get(), entry.get());
       if (i == j)

@@ -7,12 +7,9 @@
 #include <vector>
 
 #include "interval.h"
+#include "preconditioner.h"  // approximate_inverse: C
 
 namespace aspects {
-
-// Approximate inverse of mid([A]) in double, row major; false if mid([A]) is
-// numerically singular (the caller then reports "not proved").
-bool approximate_inverse(const IMatrix& A, std::vector<double>& C);
 
 // True when C·[A] is strictly diagonally dominant (row-wise), computed outward.
 bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A);
