@@ -1,41 +1,23 @@
 #include "eval.h"
 
-#include <cmath>
 #include <stdexcept>
+
+#include "backward.h"
+#include "interval_ends.h"
 
 namespace aspects {
 
+using ends::L;
+using ends::R;
+using ends::set_half_line_pos;
+using ends::set_unit;
+
 namespace {
-
-mpfr_ptr L(Interval& x) { return &x.get()->left; }
-mpfr_ptr R(Interval& x) { return &x.get()->right; }
-mpfr_srcptr L(const Interval& x) { return &x.get()->left; }
-mpfr_srcptr R(const Interval& x) { return &x.get()->right; }
-
-void set_half_line_pos(Interval& x) {  // [0, +inf]
-  mpfr_set_zero(L(x), 1);
-  mpfr_set_inf(R(x), 1);
-}
-
-void set_unit(Interval& x) {  // [-1, 1]
-  mpfr_set_si(L(x), -1, MPFR_RNDD);
-  mpfr_set_si(R(x), 1, MPFR_RNDU);
-}
 
 // out = x ∩ dom; returns true when dom did not remove anything.
 bool restrict_to(Interval& out, const Interval& x, const Interval& dom) {
   mpfi_intersect(out.get(), x.get(), dom.get());
   return mpfi_is_inside(x.get(), dom.get()) > 0;
-}
-
-void hull_into(Interval& acc, bool& acc_empty, const Interval& part) {
-  if (part.empty()) return;
-  if (acc_empty) {
-    mpfi_set(acc.get(), part.get());
-    acc_empty = false;
-  } else {
-    mpfi_union(acc.get(), acc.get(), part.get());
-  }
 }
 
 }  // namespace
@@ -204,59 +186,6 @@ EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
   return status;
 }
 
-// a ∩= {t : sin t ∈ r} (or cos). The preimage is ∪k (b + 2kπ) ∪ (π − b + 2kπ) with
-// b = asin(r) for sin, ∪k (±b + 2kπ) with b = acos(r) for cos; each piece is an MPFI
-// enclosure, so the hull of their intersections with a contains every preimage in a.
-bool Evaluator::project_periodic(Op op, Interval& r, Interval& a) {
-  set_unit(t1_);
-  if (!r.intersect(t1_)) return false;
-  if (!a.bounded()) return true;
-  Interval& base = t1_;
-  if (op == Op::Sin)
-    mpfi_asin(base.get(), r.get());
-  else
-    mpfi_acos(base.get(), r.get());
-  const Interval& two_pi = two_pi_;
-  double period = 6.283185307179586;
-  double kmin = std::floor(a.lo_down() / period) - 1, kmax = std::ceil(a.hi_up() / period) + 1;
-  if (kmax - kmin > 8) return true;  // a spans many periods: nothing to gain
-  Interval& piece = t3_;
-  Interval hull;
-  bool empty = true;
-  for (double k = kmin; k <= kmax; ++k) {
-    for (int branch = 0; branch < 2; ++branch) {
-      if (branch == 0) {
-        mpfi_set(piece.get(), base.get());
-      } else if (op == Op::Sin) {
-        mpfi_const_pi(piece.get());
-        mpfi_sub(piece.get(), piece.get(), base.get());
-      } else {
-        mpfi_neg(piece.get(), base.get());
-      }
-      mpfi_mul_d(t4_.get(), two_pi.get(), k);
-      mpfi_add(piece.get(), piece.get(), t4_.get());
-      mpfi_intersect(piece.get(), piece.get(), a.get());
-      hull_into(hull, empty, piece);
-    }
-  }
-  if (empty) return false;
-  return a.intersect(hull);
-}
-
-// a ∩= (s ∪ −s): the preimage of an even function (sqr, |.|, even powers) from the
-// nonnegative preimage s.
-bool Evaluator::meet_symmetric(Interval& a, const Interval& s) {
-  mpfi_intersect(t2_.get(), a.get(), s.get());
-  mpfi_neg(t3_.get(), s.get());
-  mpfi_intersect(t3_.get(), a.get(), t3_.get());
-  bool e = true;
-  hull_into(t4_, e, t2_);
-  hull_into(t4_, e, t3_);
-  if (e) return false;
-  mpfi_set(a.get(), t4_.get());
-  return true;
-}
-
 bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Interval& target,
                            Box& box) {
   if (forward(program, box) == EvalStatus::Undefined) return false;
@@ -275,116 +204,43 @@ bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Inte
   return true;
 }
 
-// Projects node id's (already narrowed) value onto its children. Every step intersects
-// a child with a superset of {child values compatible with the parent's value}.
+// Projects node id's (already narrowed) value onto its children with the operation's
+// kernel (core/backward.h): each intersects a child with a superset of {child values
+// compatible with the parent's value}.
 bool Evaluator::backward(int id, Box& box) {
   const Node& n = dag_.node(id);
   Interval& r = v_[id];
   if (r.empty()) return false;
   Interval* a = n.a >= 0 ? &v_[n.a] : nullptr;
   Interval* b = n.b >= 0 ? &v_[n.b] : nullptr;
+  BackwardScratch& s = bwd_;
   switch (n.op) {
-    case Op::Const:
-      return true;
-    case Op::Var:
-      return box[n.k].intersect(r);
-    case Op::Add:
-      mpfi_sub(t1_.get(), r.get(), b->get());
-      if (!a->intersect(t1_)) return false;
-      mpfi_sub(t1_.get(), r.get(), a->get());
-      return b->intersect(t1_);
-    case Op::Sub:
-      mpfi_add(t1_.get(), r.get(), b->get());
-      if (!a->intersect(t1_)) return false;
-      mpfi_sub(t1_.get(), a->get(), r.get());
-      return b->intersect(t1_);
-    case Op::Mul:
-      if (n.a == n.b) goto sqr;
-      if (!b->contains_zero()) {
-        mpfi_div(t1_.get(), r.get(), b->get());
-        if (!a->intersect(t1_)) return false;
-      }
-      if (!a->contains_zero()) {
-        mpfi_div(t1_.get(), r.get(), a->get());
-        if (!b->intersect(t1_)) return false;
-      }
-      return true;
-    case Op::Div:
-      // a = r*b holds wherever a/b is defined (b != 0).
-      if (r.bounded()) {
-        mpfi_mul(t1_.get(), r.get(), b->get());
-        if (!a->intersect(t1_)) return false;
-      }
-      if (!r.contains_zero() && r.bounded()) {
-        mpfi_div(t1_.get(), a->get(), r.get());
-        if (!b->intersect(t1_)) return false;
-      }
-      return true;
-    case Op::Min:  // min(a, b) >= lo(r) forces both >= lo(r)
-      mpfr_set(L(t1_), L(r), MPFR_RNDD);
-      mpfr_set_inf(R(t1_), 1);
-      return a->intersect(t1_) && b->intersect(t1_);
-    case Op::Max:
-      mpfr_set_inf(L(t1_), -1);
-      mpfr_set(R(t1_), R(r), MPFR_RNDU);
-      return a->intersect(t1_) && b->intersect(t1_);
-    case Op::Neg:
-      mpfi_neg(t1_.get(), r.get());
-      return a->intersect(t1_);
-    case Op::Sqr:
-    sqr: {
-      set_half_line_pos(t1_);
-      if (!r.intersect(t1_)) return false;
-      mpfi_sqrt(t1_.get(), r.get());  // [sqrt lo, sqrt hi]
-      return meet_symmetric(*a, t1_);
-    }
-    case Op::Pow: {
-      if (n.k < 0) return true;  // weak but sound
-      unsigned long k = (unsigned long)n.k;
-      bool even = (k % 2) == 0;
-      if (even) {
-        set_half_line_pos(t1_);
-        if (!r.intersect(t1_)) return false;
-      }
-      mpfr_rootn_ui(L(t1_), L(r), k, MPFR_RNDD);
-      mpfr_rootn_ui(R(t1_), R(r), k, MPFR_RNDU);
-      if (!even) return a->intersect(t1_);
-      return meet_symmetric(*a, t1_);
-    }
-    case Op::Sqrt:
-      set_half_line_pos(t1_);
-      if (!r.intersect(t1_)) return false;
-      mpfi_sqr(t1_.get(), r.get());
-      return a->intersect(t1_);
-    case Op::Exp:
-      set_half_line_pos(t1_);
-      if (!r.intersect(t1_)) return false;
-      mpfi_log(t1_.get(), r.get());
-      return a->intersect(t1_);
-    case Op::Log:
-      mpfi_exp(t1_.get(), r.get());
-      return a->intersect(t1_);
-    case Op::Abs:
-      set_half_line_pos(t1_);
-      if (!r.intersect(t1_)) return false;
-      return meet_symmetric(*a, r);
-    case Op::Asin:  // asin is a bijection [-1,1] -> [-pi/2, pi/2]
-      mpfi_sin(t1_.get(), r.get());
-      return a->intersect(t1_);
-    case Op::Acos:
-      mpfi_cos(t1_.get(), r.get());
-      return a->intersect(t1_);
-    case Op::Atan:
-      mpfi_tan(t1_.get(), r.get());
-      if (!t1_.bounded() || mpfi_nan_p(t1_.get())) return true;
-      return a->intersect(t1_);
+    case Op::Const: return true;
+    case Op::Var: return box[n.k].intersect(r);
+    case Op::Add: return bwd_add(r, *a, *b, s);
+    case Op::Sub: return bwd_sub(r, *a, *b, s);
+    case Op::Mul: return n.a == n.b ? bwd_sqr(r, *a, s) : bwd_mul(r, *a, *b, s);
+    case Op::Div: return bwd_div(r, *a, *b, s);
+    case Op::Min: return bwd_min(r, *a, *b, s);
+    case Op::Max: return bwd_max(r, *a, *b, s);
+    case Op::Neg: return bwd_neg(r, *a, s);
+    case Op::Sqr: return bwd_sqr(r, *a, s);
+    case Op::Pow: return bwd_pow(r, *a, n.k, s);
+    case Op::Sqrt: return bwd_sqrt(r, *a, s);
+    case Op::Exp: return bwd_exp(r, *a, s);
+    case Op::Log: return bwd_log(r, *a, s);
+    case Op::Abs: return bwd_abs(r, *a, s);
+    case Op::Asin: return bwd_asin(r, *a, s);
+    case Op::Acos: return bwd_acos(r, *a, s);
+    case Op::Atan: return bwd_atan(r, *a, s);
     case Op::Sin:
     case Op::Cos:
       // The preimage costs an asin or acos and up to ten pieces; when the node narrowed
       // by less than a tenth it rarely pays (skipping only contracts less: sound).
       // RRRRR eps 0.1: 6 % less CPU for 1 % more boxes (bench/RESULTS.md).
       if (r.width_up() >= 0.9 * fwd_[id].width_up()) return true;
-      return project_periodic(n.op, r, *a);
+      if (n.op == Op::Sin) return bwd_sin(r, *a, two_pi_, s);
+      return bwd_cos(r, *a, two_pi_, s);
     case Op::Tan:
       // The range check done by the parent's intersection is the (sound) projection kept.
       return true;

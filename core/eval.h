@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "backward.h"
 #include "expr.h"
 #include "interval.h"
 #include "sincos.h"
@@ -33,8 +34,6 @@ class Evaluator {
 
  private:
   bool backward(int id, Box& box);
-  bool project_periodic(Op op, Interval& r, Interval& a);
-  bool meet_symmetric(Interval& a, const Interval& s);
   void eval_pow(Interval& out, const Interval& a, int k);
 
   // sin and cos cost most of an evaluation; the models take both of the same argument,
@@ -49,8 +48,8 @@ class Evaluator {
   std::vector<Interval> trig_arg_, trig_sin_, trig_cos_;
   std::vector<uint8_t> trig_ok_;
   SinCos sincos_;
-  Interval t1_, t2_, t3_;
-  Interval t4_;  // its endpoints double as mpfr scratch
+  Interval t1_, t2_, t3_, t4_;  // forward scratch
+  BackwardScratch bwd_;         // backward scratch (the kernels' temporaries)
   Interval two_pi_;
 };
 

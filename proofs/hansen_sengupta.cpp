@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "strong_regularity.h"
+#include "preconditioner.h"
 
 namespace aspects {
 
@@ -26,19 +26,8 @@ HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
   if (ws.A.rows() != n) ws.A = IMatrix(n, n);
   ws.b.resize(n);
   for (int i = 0; i < n; ++i) {
-    mpfi_set_si(ws.b[i].get(), 0);
-    for (int k = 0; k < n; ++k) {
-      mpfi_mul_d(ws.t1.get(), ws.f0[k].get(), ws.C[size_t(i) * n + k]);
-      mpfi_add(ws.b[i].get(), ws.b[i].get(), ws.t1.get());
-    }
-    for (int j = 0; j < n; ++j) {
-      Interval& a = ws.A(i, j);
-      mpfi_set_si(a.get(), 0);
-      for (int k = 0; k < n; ++k) {
-        mpfi_mul_d(ws.t1.get(), ws.J(k, j).get(), ws.C[size_t(i) * n + k]);
-        mpfi_add(a.get(), a.get(), ws.t1.get());
-      }
-    }
+    preconditioned_entry(ws.C, ws.f0, i, ws.b[i], ws.t1);
+    for (int j = 0; j < n; ++j) preconditioned_entry(ws.C, ws.J, i, j, ws.A(i, j), ws.t1);
   }
   image.resize(n);
   // Gauss–Seidel: component j < i uses its new value (intersected with the box).

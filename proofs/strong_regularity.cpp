@@ -1,30 +1,12 @@
 #include "strong_regularity.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
-namespace aspects {
+#include "preconditioner.h"
 
-bool approximate_inverse(const IMatrix& A, std::vector<double>& C) {
-  int n = A.rows();
-  Eigen::MatrixXd M(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      double m = A(i, j).mid();
-      if (!std::isfinite(m)) return false;
-      M(i, j) = m;
-    }
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
-  if (!lu.isInvertible()) return false;
-  Eigen::MatrixXd inv = lu.inverse();
-  C.resize(size_t(n) * n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      if (!std::isfinite(inv(i, j))) return false;
-      C[size_t(i) * n + j] = inv(i, j);
-    }
-  return true;
-}
+namespace aspects {
 
 namespace {
 
@@ -35,13 +17,8 @@ bool precondition(const std::vector<double>& C, const IMatrix& A, IMatrix& M) {
   Interval term;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      Interval& e = M(i, j);
-      mpfi_set_si(e.get(), 0);
-      for (int k = 0; k < n; ++k) {
-        mpfi_mul_d(term.get(), A(k, j).get(), C[size_t(i) * n + k]);
-        mpfi_add(e.get(), e.get(), term.get());
-      }
-      if (!e.bounded() || e.empty()) return false;
+      preconditioned_entry(C, A, i, j, M(i, j), term);
+      if (!M(i, j).bounded() || M(i, j).empty()) return false;
     }
   return true;
 }
@@ -55,7 +32,7 @@ bool dominant(const IMatrix& M, const std::vector<double>& D) {
     mpfi_set_si(off.get(), 0);
     for (int j = 0; j < n; ++j) {
       mpfi_abs(term.get(), M(i, j).get());
-      mpfi_mul_d(term.get(), term.get(), D[j]);
+      if (!D.empty()) mpfi_mul_d(term.get(), term.get(), D[j]);
       if (i == j)
         mpfi_set(diag.get(), term.get());
       else

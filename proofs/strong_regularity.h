@@ -12,16 +12,14 @@
 #include <vector>
 
 #include "interval.h"
+#include "preconditioner.h"  // approximate_inverse: C
 
 namespace aspects {
 
-// Approximate inverse of mid([A]) in double, row major; false if mid([A]) is
-// numerically singular (the caller then reports "not proved").
-bool approximate_inverse(const IMatrix& A, std::vector<double>& C);
-
 // True when C·[A]·diag(D) is strictly diagonally dominant (row-wise), computed outward.
+// An empty D stands for weights 1 (the paper's test).
 bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A,
-                               const std::vector<double>& D);
+                               const std::vector<double>& D = {});
 
 // P2 for one matrix: picks C and D, then tests. `C_out` and `D_out`, if given, receive them.
 bool strongly_regular(const IMatrix& A, std::vector<double>* C_out = nullptr,
