@@ -101,7 +101,7 @@ class Reader {
   // A record count, checked against the bytes left before anything is allocated.
   uint32_t count(size_t record_bytes) {
     uint32_t c = u32();
-    if (uint64_t(c) * record_bytes > left()) fail("count larger than the file");
+    if (uint64_t(c) * record_bytes > left()) fail("truncated (a count is larger than the file)");
     return c;
   }
   bool literal(const char* s) {
