@@ -1,10 +1,13 @@
 #!/bin/sh
 # `aspects query` and `aspects path` on damaged result directories (exit 2, a message
-# naming the problem), and `aspects path --plot` writing a PNG. $2: a result directory
-# written by `aspects solve --out` for RRRRR (the query_fixture test).
+# naming the problem), `aspects path --plot` writing a PNG, and a periodic pose: a query
+# modulo 2π and a path across the ±π seam through a certified link. $2: a result
+# directory written by `aspects solve --out` for RRRRR (the query_fixture test); $3: the
+# model tests/models/seam_pose.robot.
 set -eu
 aspects=$1
 result=$2
+seam_model=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "query_path_cli: $*" >&2; exit 1; }
@@ -42,4 +45,13 @@ expect 0 "certified singularity-free path in CSNC [0-9]+" \
 [ -s "$tmp/path.png" ] || fail "no PNG written"
 head -c 4 "$tmp/path.png" | grep -q PNG || fail "not a PNG"
 ls "$tmp" | grep -q tmp && fail "temporary file left: $(ls "$tmp")"
+# Seam: -9.42 is 3.1464 modulo 2π; from 2.9 to -2.9 the short way is across ±π (length
+# 2π - 5.8), through one link whose witness is ±π.
+"$aspects" solve "$seam_model" --eps 0.1 --no-cert --quiet --out "$tmp/seam"
+expect 0 "^CSNC 0  signs -,\\+$" "$aspects" query "$tmp/seam" --pose=-9.42
+expect 0 "certified singularity-free path in CSNC 0: 3 waypoints, length 0\\.483185$" \
+  "$aspects" path "$tmp/seam" --from 2.9 --to=-2.9
+grep -E -q "^  witness \\(-?3\\.141592654\\)  box [0-9]+: q in \\[0\\.99999" "$tmp/out" ||
+  { cat "$tmp/out" >&2; fail "no witness at the seam"; }
+expect 1 "refused: .*different determinant signs" "$aspects" path "$tmp/seam" --from 2.5 --to=-2.9
 echo ok
