@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
       ->default_val("round-robin");
 
   QueryOptions qo;
-  auto* query = app.add_subcommand("query", "Certified commands of a pose, from a result directory");
+  auto* query =
+      app.add_subcommand("query", "Certified commands of a pose, from a result directory");
   query->add_option("RESULT_DIR", qo.result_dir, "directory written by `aspects solve --out`")
       ->required();
   query->add_option("--pose", qo.pose, "the pose, comma-separated in pose order (e.g. 3,5)")
@@ -52,7 +53,8 @@ int main(int argc, char** argv) {
   query->add_flag("--json", qo.json, "print one JSON object");
 
   PathOptions po;
-  auto* path = app.add_subcommand("path", "Certified singularity-free path between two poses in one CSNC");
+  auto* path = app.add_subcommand(
+      "path", "Certified singularity-free path between two poses in one CSNC");
   path->add_option("RESULT_DIR", po.result_dir, "directory written by `aspects solve --out`")
       ->required();
   path->add_option("--from", po.from, "start pose, comma-separated in pose order")->required();

@@ -110,12 +110,16 @@ bool shortest_boxes(const LoadedResult& r, int32_t k, const std::vector<double>&
                pose_distance(e.witness, centre[local[e.b]], r.pose_periodic);
     boost::add_edge(local[e.a], local[e.b], EdgeData{w, int32_t(l)}, g);
   }
-  for (size_t i : from_boxes)
-    if (local[i] >= 0)
-      boost::add_edge(source, local[i], EdgeData{pose_distance(from, centre[local[i]], r.pose_periodic), -1}, g);
-  for (size_t i : to_boxes)
-    if (local[i] >= 0)
-      boost::add_edge(local[i], target, EdgeData{pose_distance(centre[local[i]], to, r.pose_periodic), -1}, g);
+  for (size_t i : from_boxes) {
+    if (local[i] < 0) continue;
+    double w = pose_distance(from, centre[local[i]], r.pose_periodic);
+    boost::add_edge(source, local[i], EdgeData{w, -1}, g);
+  }
+  for (size_t i : to_boxes) {
+    if (local[i] < 0) continue;
+    double w = pose_distance(centre[local[i]], to, r.pose_periodic);
+    boost::add_edge(local[i], target, EdgeData{w, -1}, g);
+  }
   std::vector<Graph::vertex_descriptor> pred(boost::num_vertices(g));
   std::vector<double> dist(boost::num_vertices(g));
   boost::dijkstra_shortest_paths(
@@ -124,7 +128,8 @@ bool shortest_boxes(const LoadedResult& r, int32_t k, const std::vector<double>&
           .weight_map(boost::get(&EdgeData::weight, g)));
   if (pred[target] == Graph::vertex_descriptor(target)) return false;  // unreachable
   std::vector<Graph::vertex_descriptor> chain;
-  for (auto v = pred[target]; v != Graph::vertex_descriptor(source); v = pred[v]) chain.push_back(v);
+  for (auto v = pred[target]; v != Graph::vertex_descriptor(source); v = pred[v])
+    chain.push_back(v);
   std::reverse(chain.begin(), chain.end());
   boxes.clear();
   links.clear();

@@ -56,7 +56,8 @@ void write_path_plot(const LoadedResult& r, const PathResult& p, const std::stri
   d["csnc"] = p.csnc;
   d["names"] = {m.vars[vx].name, m.vars[vy].name};
   d["title"] = m.name + ": CSNC " + std::to_string(p.csnc) + ", " +
-               std::to_string(p.waypoints.size()) + " waypoints (" + path_outcome_name(p.outcome) + ")";
+               std::to_string(p.waypoints.size()) + " waypoints (" +
+               path_outcome_name(p.outcome) + ")";
   d["boxes"] = nlohmann::json::array();
   for (const IndexSolutionBox& s : r.index.solutions)
     if (s.csnc == p.csnc) d["boxes"].push_back({s.lo[vx], s.hi[vx], s.lo[vy], s.hi[vy]});
@@ -75,7 +76,8 @@ void write_path_plot(const LoadedResult& r, const PathResult& p, const std::stri
   if (rc == 0) waitpid(pid, &status, 0);
   std::remove(data.c_str());
   if (rc != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("--plot: " + std::string(py) + " with matplotlib could not write " + png);
+    throw std::runtime_error("--plot: " + std::string(py) +
+                             " with matplotlib could not write " + png);
 }
 
 }  // namespace aspects

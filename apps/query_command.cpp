@@ -64,13 +64,17 @@ namespace {
 
 std::string signs_text(const std::vector<int8_t>& s) {
   std::string t;
-  for (size_t k = 0; k < s.size(); ++k) t += (k ? "," : "") + std::string(s[k] > 0 ? "+" : s[k] < 0 ? "-" : "0");
+  for (size_t k = 0; k < s.size(); ++k) {
+    if (k) t += ',';
+    t += s[k] > 0 ? '+' : s[k] < 0 ? '-' : '0';
+  }
   return t;
 }
 
 void print_text(const LoadedResult& r, const std::vector<double>& pose, const QueryResult& q) {
   const Model& m = r.model;
-  std::printf("robot %s  eps %g  pose %s\n", m.name.c_str(), r.index.eps, format_pose(pose).c_str());
+  std::printf("robot %s  eps %g  pose %s\n", m.name.c_str(), r.index.eps,
+              format_pose(pose).c_str());
   std::string names;
   for (size_t k = 0; k < r.index.factors.size(); ++k)
     names += (k ? "; " : "") + r.index.factors[k].origin;

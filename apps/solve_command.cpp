@@ -178,9 +178,9 @@ int run_solve(const SolveOptions& opts) {
     if (cert) cert->finish(model, r);
     write_boxes_csv(model, r, o.out_dir + "/boxes.csv");
     // What `aspects query` and `aspects path` read instead of re-solving.
+    const std::string model_file = o.model_path.empty() ? "(embedded RRRRR)" : o.model_path;
     write_result_index(o.out_dir + "/" + kResultIndexName,
-                       build_result_index(model, r, o.prec, o.tau, o.eps,
-                                          o.model_path.empty() ? "(embedded RRRRR)" : o.model_path));
+                       build_result_index(model, r, o.prec, o.tau, o.eps, model_file));
     write_file_atomically(o.out_dir + "/summary.json", summary_json(model, o, r).dump(2) + "\n");
   }
   if (!o.quiet) {

@@ -38,7 +38,8 @@ expect 2 "result index version 9, this aspects reads version 1" \
   "$aspects" query "$tmp/version" --pose 3,5
 expect 2 "bad magic" "$aspects" path "$tmp/garbage" --from 3,5 --to 0,8
 expect 2 "RESULT_DIR .*/empty: no aspects.idx" "$aspects" query "$tmp/empty" --pose 3,5
-expect 2 "RESULT_DIR .*/missing: no such directory" "$aspects" path "$tmp/missing" --from 3,5 --to 0,8
+expect 2 "RESULT_DIR .*/missing: no such directory" \
+  "$aspects" path "$tmp/missing" --from 3,5 --to 0,8
 
 expect 0 "certified singularity-free path in CSNC [0-9]+" \
   "$aspects" path "$result" --from 3,5 --to 0,8 --plot "$tmp/path.png"
