@@ -240,3 +240,35 @@ TEST(ResultIndex, RecomputedWitnessesAreTheRecordedOnes) {
   ASSERT_EQ(a.links.size(), b.links.size());
   for (size_t i = 0; i < a.links.size(); ++i) EXPECT_EQ(a.links[i].witness, b.links[i].witness);
 }
+
+TEST(ResultIndex, EveryTruncationAndByteFlipIsRejectedOrReadNeverACrash) {
+  // A small index (the seam model of tests/models), damaged at every length and at random
+  // bytes: decode either throws IndexError or returns; under the sanitizers it must not
+  // read out of bounds or allocate from a damaged count.
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_TEST_MODELS_DIR) + "/seam_pose.robot");
+  AspectsConfig cfg;
+  cfg.eps = 0.1;
+  AspectsResult res = compute_aspects(m, cfg);
+  const std::string bytes =
+      encode_result_index(build_result_index(m, res, 53, cfg.tau, cfg.eps, "seam"));
+  int rejected = 0;
+  for (size_t len = 0; len < bytes.size(); ++len) {
+    try {
+      decode_result_index(bytes.substr(0, len), "t");
+    } catch (const IndexError&) {
+      ++rejected;
+    }
+  }
+  EXPECT_EQ(rejected, int(bytes.size()));  // no proper prefix is a valid index
+  std::mt19937 g(11);
+  for (int k = 0; k < 3000; ++k) {
+    std::string d = bytes;
+    size_t at = std::uniform_int_distribution<size_t>(0, d.size() - 1)(g);
+    d[at] = char(std::uniform_int_distribution<int>(0, 255)(g));
+    try {
+      decode_result_index(d, "t");
+    } catch (const IndexError&) {
+    }
+  }
+}
