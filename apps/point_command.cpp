@@ -18,12 +18,14 @@ bool newton_in_double(ModelEvaluator& ev, Box& point, const double* lo, const do
   std::vector<Interval> f;
   IMatrix J;
   std::vector<double> C;
+  double step = INFINITY, size = 0;
   for (iterations = 1; iterations <= 30; ++iterations) {
     for (int j = 0; j < n; ++j) point[m.command[j]].set_point(q[j]);
     if (ev.equations(point, f) != EvalStatus::Defined) return false;
     if (ev.jacobian_q(point, J) != EvalStatus::Defined) return false;
     if (!approximate_inverse(J, C)) return false;
-    double step = 0, size = 0;
+    step = 0;
+    size = 0;
     for (int i = 0; i < n; ++i) {
       double d = 0;
       for (int k = 0; k < n; ++k) d += C[size_t(i) * n + k] * f[k].mid();
@@ -38,7 +40,10 @@ bool newton_in_double(ModelEvaluator& ev, Box& point, const double* lo, const do
     }
     if (step <= 1e-14 * (1 + size)) return true;
   }
-  return false;
+  // Rounding can keep the last steps above 1e-14 near an ill-conditioned root; the proof
+  // around q (radius 1e-9) still succeeds when q is that close.
+  iterations = 30;
+  return step <= 1e-11 * (1 + size);
 }
 
 // Iteration (9) at the point pose from the command box `start`; Certified when the
