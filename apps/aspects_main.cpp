@@ -7,6 +7,9 @@
 #include "aspects_version.h"
 #include "model.h"
 #include "model_info.h"
+#include "path_command.h"
+#include "query_command.h"
+#include "result_index.h"
 #include "solve_command.h"
 
 using namespace aspects;
@@ -40,6 +43,26 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}))
       ->default_val("round-robin");
 
+  QueryOptions qo;
+  auto* query =
+      app.add_subcommand("query", "Certified commands of a pose, from a result directory");
+  query->add_option("RESULT_DIR", qo.result_dir, "directory written by `aspects solve --out`")
+      ->required();
+  query->add_option("--pose", qo.pose, "the pose, comma-separated in pose order (e.g. 3,5)")
+      ->required();
+  query->add_flag("--json", qo.json, "print one JSON object");
+
+  PathOptions po;
+  auto* path = app.add_subcommand(
+      "path", "Certified singularity-free path between two poses in one CSNC");
+  path->add_option("RESULT_DIR", po.result_dir, "directory written by `aspects solve --out`")
+      ->required();
+  path->add_option("--from", po.from, "start pose, comma-separated in pose order")->required();
+  path->add_option("--to", po.to, "goal pose, comma-separated in pose order")->required();
+  path->add_option("--csnc", po.csnc, "stay in this CSNC (default: the largest holding both)");
+  path->add_flag("--json", po.json, "print one JSON object");
+  path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -59,7 +82,12 @@ int main(int argc, char** argv) {
       print_model_info(m, std::cout);
       return 0;
     }
+    if (*query) return run_query(qo);
+    if (*path) return run_path(po);
     return run_solve(so);
+  } catch (const IndexError& e) {
+    std::cerr << "aspects: " << e.what() << '\n';
+    return 2;
   } catch (const ModelError& e) {
     std::cerr << e.what() << '\n';
     return 2;

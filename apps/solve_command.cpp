@@ -18,6 +18,7 @@
 #include "certificate_writer.h"
 #include "generalized_aspects.h"
 #include "model.h"
+#include "result_index.h"
 
 namespace aspects {
 
@@ -176,6 +177,10 @@ int run_solve(const SolveOptions& opts) {
   if (!o.out_dir.empty()) {
     if (cert) cert->finish(model, r);
     write_boxes_csv(model, r, o.out_dir + "/boxes.csv");
+    // What `aspects query` and `aspects path` read instead of re-solving.
+    const std::string model_file = o.model_path.empty() ? "(embedded RRRRR)" : o.model_path;
+    write_result_index(o.out_dir + "/" + kResultIndexName,
+                       build_result_index(model, r, o.prec, o.tau, o.eps, model_file));
     write_file_atomically(o.out_dir + "/summary.json", summary_json(model, o, r).dump(2) + "\n");
   }
   if (!o.quiet) {

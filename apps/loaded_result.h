@@ -1,0 +1,28 @@
+// A result directory opened for `aspects query` and `aspects path`: the index of
+// result_index.h and its model parsed again from the recorded text, at the recorded
+// working precision. Pose coordinates are in pose order (the model's pose variables in
+// declaration order).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model.h"
+#include "result_index.h"
+
+namespace aspects {
+
+struct LoadedResult {
+  ResultIndex index;
+  Model model;
+  std::vector<bool> pose_periodic;  // pose order
+};
+
+// Reads DIR/aspects.idx and parses its model. Sets the working precision to the
+// recorded one, so call it before creating any interval. Throws IndexError.
+LoadedResult load_result(const std::string& result_dir);
+
+// Builds the same from an index already in memory (tests); throws IndexError.
+LoadedResult load_result_from(ResultIndex index, const std::string& what);
+
+}  // namespace aspects

@@ -1,0 +1,150 @@
+#include "query_command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "pose.h"
+
+namespace aspects {
+
+const char* query_outcome_name(QueryOutcome o) {
+  switch (o) {
+    case QueryOutcome::Answered: return "answered";
+    case QueryOutcome::NotProved: return "not_proved";
+    case QueryOutcome::UndecidedRegion: return "undecided_region";
+    case QueryOutcome::OutsideWorkspace: return "outside_workspace";
+  }
+  return "?";
+}
+
+std::vector<size_t> solution_boxes_at(const LoadedResult& r, const std::vector<double>& pose) {
+  std::vector<size_t> found;
+  for (size_t i = 0; i < r.index.solutions.size(); ++i) {
+    const IndexSolutionBox& s = r.index.solutions[i];
+    if (pose_in_box(r.model, pose, s.lo.data(), s.hi.data())) found.push_back(i);
+  }
+  return found;
+}
+
+QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& pose) {
+  QueryResult q;
+  HsWorkspace ws;
+  for (size_t i : solution_boxes_at(r, pose)) {
+    const IndexSolutionBox& s = r.index.solutions[i];
+    PointCommand c = certified_command(ev, s.lo.data(), s.hi.data(), pose, r.index.tau, ws);
+    if (c.status == PointCommandStatus::Certified)
+      q.answers.push_back({s.csnc, s.id, i, std::move(c)});
+    else
+      q.unproved.push_back(s.id);
+  }
+  std::stable_sort(q.answers.begin(), q.answers.end(),
+                   [](const QueryAnswer& a, const QueryAnswer& b) { return a.csnc < b.csnc; });
+  if (!q.answers.empty()) {
+    q.outcome = QueryOutcome::Answered;
+    return q;
+  }
+  if (!q.unproved.empty()) {
+    q.outcome = QueryOutcome::NotProved;
+    return q;
+  }
+  std::vector<bool> periodic = r.pose_periodic;
+  for (const IndexUndecidedBox& u : r.index.undecided) {
+    bool in = true;
+    for (size_t j = 0; j < pose.size() && in; ++j)
+      in = coordinate_in(pose[j], u.lo[j], u.hi[j], periodic[j]);
+    if (in) q.undecided.push_back(u.id);
+  }
+  q.outcome = q.undecided.empty() ? QueryOutcome::OutsideWorkspace : QueryOutcome::UndecidedRegion;
+  return q;
+}
+
+namespace {
+
+std::string signs_text(const std::vector<int8_t>& s) {
+  std::string t;
+  for (size_t k = 0; k < s.size(); ++k) {
+    if (k) t += ',';
+    t += s[k] > 0 ? '+' : s[k] < 0 ? '-' : '0';
+  }
+  return t;
+}
+
+void print_text(const LoadedResult& r, const std::vector<double>& pose, const QueryResult& q) {
+  const Model& m = r.model;
+  std::printf("robot %s  eps %g  pose %s\n", m.name.c_str(), r.index.eps,
+              format_pose(pose).c_str());
+  std::string names;
+  for (size_t k = 0; k < r.index.factors.size(); ++k)
+    names += (k ? "; " : "") + r.index.factors[k].origin;
+  switch (q.outcome) {
+    case QueryOutcome::Answered: {
+      std::printf("%zu certified command(s); signs of: %s\n", q.answers.size(), names.c_str());
+      int32_t last = -2;
+      for (const QueryAnswer& a : q.answers) {
+        const IndexSolutionBox& s = r.index.solutions[a.solution];
+        if (a.csnc != last)
+          std::printf("CSNC %d%s  signs %s\n", a.csnc,
+                      uint32_t(a.csnc) < r.index.filtered ? "" : " (filtered out: small)",
+                      signs_text(s.signs).c_str());
+        last = a.csnc;
+        std::printf("  box %u:", a.box);
+        for (int j = 0; j < m.n(); ++j)
+          std::printf(" %s in [%.17g, %.17g]", m.vars[m.command[j]].name.c_str(), a.command.lo[j],
+                      a.command.hi[j]);
+        std::printf("  width %.3g\n", a.command.width());
+      }
+      break;
+    }
+    case QueryOutcome::NotProved:
+      std::printf("the pose lies in %zu solution box(es) but no command enclosure could be "
+                  "proved (close to a singularity)\n", q.unproved.size());
+      break;
+    case QueryOutcome::UndecidedRegion:
+      std::printf("no command: the pose lies in no solution box, only in %zu undecided box(es): "
+                  "near a singularity or a constraint boundary, or not resolved at eps %g\n",
+                  q.undecided.size(), r.index.eps);
+      break;
+    case QueryOutcome::OutsideWorkspace:
+      std::printf("no command: the pose lies in no box of the result, so no feasible command "
+                  "in the declared domain reaches it (outside the workspace)\n");
+      break;
+  }
+  for (uint32_t id : q.unproved)
+    if (q.outcome == QueryOutcome::Answered)
+      std::printf("  (box %u also contains the pose; its command could not be proved)\n", id);
+}
+
+void print_json(const std::vector<double>& pose, const QueryResult& q, const LoadedResult& r) {
+  nlohmann::json j;
+  j["pose"] = pose;
+  j["outcome"] = query_outcome_name(q.outcome);
+  j["answers"] = nlohmann::json::array();
+  for (const QueryAnswer& a : q.answers)
+    j["answers"].push_back({{"csnc", a.csnc},
+                            {"box", a.box},
+                            {"command_lo", a.command.lo},
+                            {"command_hi", a.command.hi},
+                            {"width", a.command.width()},
+                            {"signs", r.index.solutions[a.solution].signs}});
+  j["unproved_boxes"] = q.unproved;
+  j["undecided_boxes"] = q.undecided;
+  std::cout << j.dump() << '\n';
+}
+
+}  // namespace
+
+int run_query(const QueryOptions& opts) {
+  LoadedResult r = load_result(opts.result_dir);
+  std::vector<double> pose = parse_pose(opts.pose, "--pose", r.model);
+  ModelEvaluator ev(r.model);
+  QueryResult q = query_pose(r, ev, pose);
+  if (opts.json)
+    print_json(pose, q, r);
+  else
+    print_text(r, pose, q);
+  return q.outcome == QueryOutcome::Answered ? 0 : 1;
+}
+
+}  // namespace aspects

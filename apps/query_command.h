@@ -1,0 +1,54 @@
+// `aspects query RESULT_DIR --pose X`: the commands of a pose, one per solution box that
+// contains it, grouped by CSNC (paper 4.1: κ_S in each box S), each enclosure proved at
+// the pose (point_command.h). A pose in no solution box is classified with the coverage
+// of the result (S ∪ U holds every feasible solution of the domain).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "loaded_result.h"
+#include "point_command.h"
+
+namespace aspects {
+
+struct QueryOptions {
+  std::string result_dir;
+  std::string pose;
+  bool json = false;
+};
+
+struct QueryAnswer {
+  int32_t csnc = -1;
+  uint32_t box = 0;        // box id (boxes.csv)
+  size_t solution = 0;     // index into ResultIndex::solutions
+  PointCommand command;
+};
+
+enum class QueryOutcome {
+  Answered,          // at least one certified command
+  NotProved,         // in solution boxes, but no enclosure could be proved
+  UndecidedRegion,   // in undecided boxes only: near a singularity, a constraint boundary,
+                     // or not resolved at this ε
+  OutsideWorkspace,  // in no box: certainly no feasible command in the declared domain
+};
+
+struct QueryResult {
+  QueryOutcome outcome = QueryOutcome::OutsideWorkspace;
+  std::vector<QueryAnswer> answers;  // certified ones, by (CSNC, box id)
+  std::vector<uint32_t> unproved;    // solution boxes containing the pose, no proof
+  std::vector<uint32_t> undecided;   // undecided boxes containing the pose
+};
+
+const char* query_outcome_name(QueryOutcome o);
+
+// Solution boxes of `r` whose pose part contains `pose` (indices into solutions).
+std::vector<size_t> solution_boxes_at(const LoadedResult& r, const std::vector<double>& pose);
+
+QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& pose);
+
+// Exit code: 0 answered, 1 no certified command, 2 usage or input error (thrown).
+int run_query(const QueryOptions& opts);
+
+}  // namespace aspects

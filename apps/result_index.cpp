@@ -1,0 +1,340 @@
+#include "result_index.h"
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "atomic_file.h"
+#include "generalized_aspects.h"
+#include "link.h"
+#include "model.h"
+
+namespace aspects {
+
+namespace {
+
+// Layout (every integer and double little-endian; a string is a u32 length and bytes):
+//   "aspects-index\n" u32 version
+//   u32 nv  u32 n  u32 p  i64 precision_bits  f64 tau  f64 eps
+//   str model_file  str model_source  p × (str origin  str text)
+//   u32 csnc_count  u32 filtered
+//   u32 S  S × (u32 id  i32 csnc  nv × (f64 lo  f64 hi)  p × i8 sign)
+//   u32 U  U × (u32 id  u8 kind  n × (f64 lo  f64 hi))
+//   u32 L  L × (u32 a  u32 b  u32 shift_code  n × f64 witness)
+//   "end-index\n"
+const char kMagic[] = "aspects-index\n";
+const char kTrailer[] = "end-index\n";
+
+class Writer {
+ public:
+  void bytes(const void* p, size_t n) { out_.append(static_cast<const char*>(p), n); }
+  void u64(uint64_t v) {
+    for (int i = 0; i < 8; ++i) out_.push_back(char((v >> (8 * i)) & 0xffu));
+  }
+  void u32(uint32_t v) {
+    for (int i = 0; i < 4; ++i) out_.push_back(char((v >> (8 * i)) & 0xffu));
+  }
+  void u8(uint8_t v) { out_.push_back(char(v)); }
+  void i32(int32_t v) { u32(uint32_t(v)); }
+  void f64(double d) {
+    uint64_t v;
+    std::memcpy(&v, &d, 8);
+    u64(v);
+  }
+  void str(const std::string& s) {
+    u32(uint32_t(s.size()));
+    bytes(s.data(), s.size());
+  }
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+class Reader {
+ public:
+  Reader(const std::string& b, const std::string& what) : b_(b), what_(what) {}
+  [[noreturn]] void fail(const std::string& msg) const {
+    throw IndexError(what_ + ": malformed result index at byte " + std::to_string(pos_) + ": " +
+                     msg + " (re-run `aspects solve --out`)");
+  }
+  void need(size_t n) const {
+    if (b_.size() - pos_ < n) fail("truncated");
+  }
+  size_t left() const { return b_.size() - pos_; }
+  uint64_t u64() {
+    need(8);
+    uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) v |= uint64_t(uint8_t(b_[pos_ + i])) << (8 * i);
+    pos_ += 8;
+    return v;
+  }
+  uint32_t u32() {
+    need(4);
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= uint32_t(uint8_t(b_[pos_ + i])) << (8 * i);
+    pos_ += 4;
+    return v;
+  }
+  uint8_t u8() {
+    need(1);
+    return uint8_t(b_[pos_++]);
+  }
+  int32_t i32() { return int32_t(u32()); }
+  double f64() {
+    uint64_t v = u64();
+    double d;
+    std::memcpy(&d, &v, 8);
+    if (!std::isfinite(d)) fail("a number is not finite");
+    return d;
+  }
+  std::string str(size_t max_len) {
+    uint32_t n = u32();
+    if (n > max_len) fail("string too long");
+    need(n);
+    std::string s = b_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  // A record count, checked against the bytes left before anything is allocated.
+  uint32_t count(size_t record_bytes) {
+    uint32_t c = u32();
+    if (uint64_t(c) * record_bytes > left()) fail("truncated (a count is larger than the file)");
+    return c;
+  }
+  bool literal(const char* s) {
+    size_t n = std::strlen(s);
+    if (left() < n || b_.compare(pos_, n, s) != 0) return false;
+    pos_ += n;
+    return true;
+  }
+
+ private:
+  const std::string& b_;
+  std::string what_;
+  size_t pos_ = 0;
+};
+
+// certify_link's choice of witness (proofs/link.cpp): the midpoint of the inner
+// intersection of the pose parts, box b shifted by 2πk.
+std::vector<double> recompute_witness(const Model& m, const BoxStore& R, const NeighborPair& p) {
+  std::vector<double> w(m.n(), 0.0);
+  for (int j = 0; j < m.n(); ++j) {
+    int v = m.pose[j];
+    double lo, hi;
+    if (inner_intersection(R.lo(p.a, v), R.hi(p.a, v), R.lo(p.b, v), R.hi(p.b, v), p.shift(v),
+                           lo, hi))
+      w[j] = Interval(lo, hi).mid();
+  }
+  return w;
+}
+
+}  // namespace
+
+ResultIndex build_result_index(const Model& model, const AspectsResult& r, long precision_bits,
+                               double tau, double eps, const std::string& model_file) {
+  ResultIndex idx;
+  idx.model_file = model_file;
+  idx.model_source = model.source;
+  idx.precision_bits = precision_bits;
+  idx.tau = tau;
+  idx.eps = eps;
+  idx.nv = uint32_t(r.boxes.nv());
+  idx.n = uint32_t(model.n());
+  for (const auto& f : r.factors) idx.factors.push_back({f.origin, f.text});
+  idx.csnc_count = uint32_t(r.csnc_sizes.size());
+  idx.filtered = uint32_t(r.filtered);
+  const size_t p = r.factors.size();
+  std::vector<int32_t> solution_index(r.boxes.size(), -1);
+  for (int b = 0; b < r.boxes.size(); ++b) {
+    if (r.certified[b]) {
+      IndexSolutionBox s;
+      s.id = uint32_t(b);
+      s.csnc = r.csnc[b];
+      for (int v = 0; v < r.boxes.nv(); ++v) {
+        s.lo.push_back(r.boxes.lo(b, v));
+        s.hi.push_back(r.boxes.hi(b, v));
+      }
+      s.signs.assign(r.signs.begin() + ptrdiff_t(b * p), r.signs.begin() + ptrdiff_t((b + 1) * p));
+      solution_index[b] = int32_t(idx.solutions.size());
+      idx.solutions.push_back(std::move(s));
+    } else {
+      IndexUndecidedBox u;
+      u.id = uint32_t(b);
+      u.kind = uint8_t(r.undecided_kind[b]);
+      for (int v : model.pose) {
+        u.lo.push_back(r.boxes.lo(b, v));
+        u.hi.push_back(r.boxes.hi(b, v));
+      }
+      idx.undecided.push_back(std::move(u));
+    }
+  }
+  const bool kept = r.link_proofs.size() == r.certified_links.size();
+  for (size_t i = 0; i < r.certified_links.size(); ++i) {
+    const NeighborPair& pair = r.neighbors[r.certified_links[i]];
+    IndexLink l;
+    l.a = uint32_t(solution_index[pair.a]);
+    l.b = uint32_t(solution_index[pair.b]);
+    l.shift_code = pair.shift_code;
+    if (kept)
+      l.witness.assign(r.link_proofs.witness(i), r.link_proofs.witness(i) + model.n());
+    else
+      l.witness = recompute_witness(model, r.boxes, pair);
+    idx.links.push_back(std::move(l));
+  }
+  return idx;
+}
+
+std::string encode_result_index(const ResultIndex& idx) {
+  Writer w;
+  w.bytes(kMagic, std::strlen(kMagic));
+  w.u32(kResultIndexVersion);
+  w.u32(idx.nv);
+  w.u32(idx.n);
+  w.u32(uint32_t(idx.factors.size()));
+  w.u64(uint64_t(idx.precision_bits));
+  w.f64(idx.tau);
+  w.f64(idx.eps);
+  w.str(idx.model_file);
+  w.str(idx.model_source);
+  for (const auto& f : idx.factors) {
+    w.str(f.origin);
+    w.str(f.text);
+  }
+  w.u32(idx.csnc_count);
+  w.u32(idx.filtered);
+  w.u32(uint32_t(idx.solutions.size()));
+  for (const auto& s : idx.solutions) {
+    w.u32(s.id);
+    w.i32(s.csnc);
+    for (uint32_t v = 0; v < idx.nv; ++v) {
+      w.f64(s.lo[v]);
+      w.f64(s.hi[v]);
+    }
+    for (int8_t g : s.signs) w.u8(uint8_t(g));
+  }
+  w.u32(uint32_t(idx.undecided.size()));
+  for (const auto& u : idx.undecided) {
+    w.u32(u.id);
+    w.u8(u.kind);
+    for (uint32_t j = 0; j < idx.n; ++j) {
+      w.f64(u.lo[j]);
+      w.f64(u.hi[j]);
+    }
+  }
+  w.u32(uint32_t(idx.links.size()));
+  for (const auto& l : idx.links) {
+    w.u32(l.a);
+    w.u32(l.b);
+    w.u32(l.shift_code);
+    for (double x : l.witness) w.f64(x);
+  }
+  w.bytes(kTrailer, std::strlen(kTrailer));
+  return w.take();
+}
+
+ResultIndex decode_result_index(const std::string& bytes, const std::string& what) {
+  Reader r(bytes, what);
+  if (!r.literal(kMagic)) r.fail("not an aspects result index (bad magic)");
+  uint32_t version = r.u32();
+  if (version != kResultIndexVersion)
+    throw IndexError(what + ": result index version " + std::to_string(version) +
+                     ", this aspects reads version " + std::to_string(kResultIndexVersion) +
+                     " (re-run `aspects solve --out`)");
+  ResultIndex idx;
+  idx.nv = r.u32();
+  idx.n = r.u32();
+  uint32_t p = r.u32();
+  if (idx.n < 1 || idx.n > 8 || idx.nv != 2 * idx.n) r.fail("bad variable counts");
+  if (p > 64) r.fail("too many factors");
+  uint64_t prec = r.u64();
+  if (prec < 24 || prec > 4096) r.fail("bad precision");
+  idx.precision_bits = long(prec);
+  idx.tau = r.f64();
+  idx.eps = r.f64();
+  if (!(idx.tau >= 1) || !(idx.eps > 0)) r.fail("bad tau or eps");
+  idx.model_file = r.str(4096);
+  idx.model_source = r.str(1u << 24);
+  for (uint32_t i = 0; i < p; ++i) {
+    IndexFactor f;
+    f.origin = r.str(4096);
+    f.text = r.str(1u << 20);
+    idx.factors.push_back(std::move(f));
+  }
+  idx.csnc_count = r.u32();
+  idx.filtered = r.u32();
+  if (idx.filtered > idx.csnc_count) r.fail("more filtered CSNCs than CSNCs");
+  uint32_t S = r.count(8 + 16 * size_t(idx.nv) + p);
+  idx.solutions.resize(S);
+  for (uint32_t i = 0; i < S; ++i) {
+    IndexSolutionBox& s = idx.solutions[i];
+    s.id = r.u32();
+    if (i > 0 && s.id <= idx.solutions[i - 1].id) r.fail("solution box ids not increasing");
+    s.csnc = r.i32();
+    if (s.csnc < 0 || uint32_t(s.csnc) >= idx.csnc_count) r.fail("bad CSNC number");
+    s.lo.resize(idx.nv);
+    s.hi.resize(idx.nv);
+    for (uint32_t v = 0; v < idx.nv; ++v) {
+      s.lo[v] = r.f64();
+      s.hi[v] = r.f64();
+      if (!(s.lo[v] <= s.hi[v])) r.fail("reversed interval");
+    }
+    s.signs.resize(p);
+    for (uint32_t k = 0; k < p; ++k) {
+      s.signs[k] = int8_t(r.u8());
+      if (s.signs[k] < -1 || s.signs[k] > 1) r.fail("bad sign");
+    }
+  }
+  uint32_t U = r.count(5 + 16 * size_t(idx.n));
+  idx.undecided.resize(U);
+  for (auto& u : idx.undecided) {
+    u.id = r.u32();
+    u.kind = r.u8();
+    if (u.kind > 2) r.fail("bad undecided kind");
+    u.lo.resize(idx.n);
+    u.hi.resize(idx.n);
+    for (uint32_t j = 0; j < idx.n; ++j) {
+      u.lo[j] = r.f64();
+      u.hi[j] = r.f64();
+      if (!(u.lo[j] <= u.hi[j])) r.fail("reversed interval");
+    }
+  }
+  uint32_t L = r.count(12 + 8 * size_t(idx.n));
+  idx.links.resize(L);
+  for (auto& l : idx.links) {
+    l.a = r.u32();
+    l.b = r.u32();
+    if (!(l.a < l.b && l.b < S)) r.fail("bad link ends");
+    l.shift_code = r.u32();
+    if (idx.nv < 16 && (l.shift_code >> (2 * idx.nv)) != 0) r.fail("bad link shift");
+    for (uint32_t v = 0; v < idx.nv; ++v)
+      if (l.shift(int(v)) > 1) r.fail("bad link shift");
+    l.witness.resize(idx.n);
+    for (auto& x : l.witness) x = r.f64();
+  }
+  if (!r.literal(kTrailer) || r.left() != 0) r.fail("missing end marker");
+  return idx;
+}
+
+void write_result_index(const std::string& path, const ResultIndex& idx) {
+  write_file_atomically(path, encode_result_index(idx));
+}
+
+ResultIndex read_result_index(const std::string& result_dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(result_dir, ec))
+    throw IndexError("RESULT_DIR " + result_dir + ": no such directory");
+  std::string path = (fs::path(result_dir) / kResultIndexName).string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw IndexError("RESULT_DIR " + result_dir + ": no " + kResultIndexName +
+                     " (written by `aspects solve --out DIR`)");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return decode_result_index(os.str(), path);
+}
+
+}  // namespace aspects

@@ -1,0 +1,274 @@
+// `aspects query` and `aspects path` on RRRRR at ε = 0.3 (apps/query_command.*,
+// apps/path_command.*, apps/result_index.*): every command enclosure printed contains the
+// root of f(x, ·) = 0 computed independently here by Newton in MPFR at 256 bits on the
+// RRRRR equations written out by hand; a path's consecutive waypoints share a box; a path
+// across CSNCs of different determinant signs is refused; the index round-trips exactly
+// and rejects truncation and other versions.
+//
+// The RRRRR result comes from the `query_fixture` test (aspects solve --out), or is solved
+// here when that directory has no index.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "generalized_aspects.h"
+#include "loaded_result.h"
+#include "path_command.h"
+#include "query_command.h"
+#include "result_index.h"
+#include "test_util.h"
+
+using namespace aspects;
+using aspects_test::R;
+
+namespace {
+
+LoadedResult& rrrrr() {
+  static LoadedResult* r = nullptr;
+  if (r) return *r;
+  const std::string dir = ASPECTS_QUERY_FIXTURE_DIR;
+  try {
+    r = new LoadedResult(load_result(dir));
+  } catch (const IndexError&) {
+    set_working_precision(53);
+    Model m = parse_model(kDefaultModelText, "(embedded RRRRR)");
+    AspectsConfig cfg;
+    cfg.eps = 0.3;
+    cfg.threads = 2;
+    cfg.keep_link_proofs = false;
+    AspectsResult res = compute_aspects(m, cfg);
+    std::filesystem::create_directories(dir);
+    write_result_index(dir + "/" + kResultIndexName,
+                       build_result_index(m, res, 53, cfg.tau, cfg.eps, "(embedded RRRRR)"));
+    r = new LoadedResult(load_result(dir));
+  }
+  return *r;
+}
+
+// RRRRR: f1 = (x1 − 8 cos q1)² + (x2 − 8 sin q1)² − 25 depends on q1 only, f2 =
+// (x1 − 9 − 5 cos q2)² + (x2 − 5 sin q2)² − 64 on q2 only: two scalar Newton iterations
+// at 256 bits from the double start. Returns false when it does not converge.
+bool mpfr_root(const std::vector<double>& x, const std::vector<double>& start, std::vector<R>& q) {
+  R x1(x[0]), x2(x[1]);
+  q = {R(start[0]), R(start[1])};
+  for (int it = 0; it < 60; ++it) {
+    R s1 = sin(q[0]), c1 = cos(q[0]), s2 = sin(q[1]), c2 = cos(q[1]);
+    R f1 = sqr(x1 - R(8) * c1) + sqr(x2 - R(8) * s1) - R(25);
+    R d1 = R(16) * (x1 * s1 - x2 * c1);
+    R f2 = sqr(x1 - R(9) - R(5) * c2) + sqr(x2 - R(5) * s2) - R(64);
+    R d2 = R(10) * ((x1 - R(9)) * s2 - x2 * c2);
+    R step1 = f1 / d1, step2 = f2 / d2;
+    q[0] = q[0] - step1;
+    q[1] = q[1] - step2;
+    if (abs(step1) < R("1e-70") && abs(step2) < R("1e-70")) return true;
+  }
+  return false;
+}
+
+// The exact root lies in [lo, hi] (the double endpoints are exact reals).
+bool encloses(double lo, double hi, const R& v) { return R(lo) <= v && v <= R(hi); }
+
+std::vector<double> centre(const IndexSolutionBox& s) {
+  return {0.5 * s.lo[0] + 0.5 * s.hi[0], 0.5 * s.lo[1] + 0.5 * s.hi[1]};
+}
+
+}  // namespace
+
+TEST(QueryPath, QueryEnclosesTheMpfrRootInEveryBox) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  // (10, -6) lies in the largest CSNC at this ε; (3, 5) in four working modes.
+  for (std::vector<double> pose : {std::vector<double>{10, -6}, std::vector<double>{3, 5}}) {
+    QueryResult q = query_pose(r, ev, pose);
+    ASSERT_EQ(q.outcome, QueryOutcome::Answered);
+    EXPECT_TRUE(q.unproved.empty());
+    if (pose[0] == 10) {
+      EXPECT_EQ(q.answers.front().csnc, 0);
+    }
+    std::vector<int32_t> csncs;
+    for (const QueryAnswer& a : q.answers) {
+      const IndexSolutionBox& s = r.index.solutions[a.solution];
+      ASSERT_EQ(a.command.status, PointCommandStatus::Certified);
+      EXPECT_LT(a.command.width(), 1e-12);
+      std::vector<R> root;
+      ASSERT_TRUE(mpfr_root(pose, {a.command.lo[0], a.command.lo[1]}, root));
+      for (int j = 0; j < 2; ++j) {
+        EXPECT_TRUE(encloses(a.command.lo[j], a.command.hi[j], root[j]))
+            << "box " << a.box << " q" << j + 1 << " root " << root[j].str();
+        EXPECT_TRUE(encloses(s.lo[2 + j], s.hi[2 + j], root[j]));  // κ_S(x) ∈ [q]
+      }
+      csncs.push_back(a.csnc);
+    }
+    EXPECT_TRUE(std::is_sorted(csncs.begin(), csncs.end()));
+  }
+}
+
+TEST(QueryPath, QueryOutsideTheWorkspaceSaysSo) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  QueryResult q = query_pose(r, ev, {19.5, 19.5});  // farther than 13 from both bases
+  EXPECT_EQ(q.outcome, QueryOutcome::OutsideWorkspace);
+  EXPECT_TRUE(q.answers.empty());
+  EXPECT_TRUE(q.undecided.empty());
+}
+
+TEST(QueryPath, PathAcrossTheLargestCsncIsCertifiedSegmentBySegment) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  // The two boxes of CSNC 0 farthest apart in x1: their pose centres.
+  const IndexSolutionBox *left = nullptr, *right = nullptr;
+  for (const IndexSolutionBox& s : r.index.solutions) {
+    if (s.csnc != 0) continue;
+    if (!left || s.lo[0] < left->lo[0]) left = &s;
+    if (!right || s.hi[0] > right->hi[0]) right = &s;
+  }
+  ASSERT_TRUE(left && right);
+  std::vector<double> from = centre(*left), to = centre(*right);
+  PathResult p = plan_path(r, ev, from, to, 0);
+  ASSERT_EQ(p.outcome, PathOutcome::Found) << p.failure;
+  EXPECT_EQ(p.csnc, 0);
+  ASSERT_GE(p.waypoints.size(), 4u);
+  EXPECT_EQ(p.waypoints.front().pose, from);
+  EXPECT_EQ(p.waypoints.back().pose, to);
+  EXPECT_EQ(p.waypoints.front().kind, WaypointKind::Start);
+  EXPECT_EQ(p.waypoints.back().kind, WaypointKind::Goal);
+  auto in_pose = [](const IndexSolutionBox& s, const std::vector<double>& x) {
+    return s.lo[0] <= x[0] && x[0] <= s.hi[0] && s.lo[1] <= x[1] && x[1] <= s.hi[1];
+  };
+  for (size_t i = 0; i < p.waypoints.size(); ++i) {
+    const Waypoint& w = p.waypoints[i];
+    const IndexSolutionBox& s = r.index.solutions[w.solution];
+    EXPECT_EQ(s.id, w.box);
+    EXPECT_EQ(s.csnc, 0);
+    ASSERT_EQ(w.command.status, PointCommandStatus::Certified) << "waypoint " << i;
+    EXPECT_TRUE(in_pose(s, w.pose)) << "waypoint " << i;
+    if (i + 1 < p.waypoints.size()) {
+      EXPECT_TRUE(in_pose(s, p.waypoints[i + 1].pose)) << "segment " << i << " leaves box " << s.id;
+    }
+    std::vector<R> root;
+    ASSERT_TRUE(mpfr_root(w.pose, {w.command.lo[0], w.command.lo[1]}, root));
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_TRUE(encloses(w.command.lo[j], w.command.hi[j], root[j])) << "waypoint " << i;
+      EXPECT_TRUE(encloses(s.lo[2 + j], s.hi[2 + j], root[j])) << "waypoint " << i;
+    }
+    if (w.kind == WaypointKind::Witness) {
+      // The previous box's κ agrees at the witness: the same root lies in its [q]
+      // (modulo 2π: a link may cross the ±π seam of a command).
+      const IndexSolutionBox& prev = r.index.solutions[p.waypoints[i - 1].solution];
+      for (int j = 0; j < 2; ++j) {
+        bool in = false;
+        for (int k = -1; k <= 1; ++k)
+          in = in || encloses(prev.lo[2 + j], prev.hi[2 + j], root[j] + R(2 * k) * R::pi());
+        EXPECT_TRUE(in) << "witness " << i << " q" << j + 1;
+      }
+    }
+  }
+}
+
+TEST(QueryPath, PathAcrossCsncsOfDifferentSignsIsRefused) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  const IndexSolutionBox* start = nullptr;
+  for (const IndexSolutionBox& s : r.index.solutions)
+    if (s.csnc == 0) start = &s;
+  ASSERT_TRUE(start);
+  // A goal whose every CSNC differs from CSNC 0 in the sign of some factor.
+  auto differs = [&](const IndexSolutionBox& s) {
+    for (size_t f = 0; f < s.signs.size(); ++f)
+      if (s.signs[f] != 0 && start->signs[f] != 0 && s.signs[f] != start->signs[f]) return true;
+    return false;
+  };
+  std::vector<double> goal;
+  for (const IndexSolutionBox& s : r.index.solutions) {
+    if (s.csnc == 0 || uint32_t(s.csnc) >= r.index.filtered || !differs(s)) continue;
+    std::vector<size_t> at = solution_boxes_at(r, centre(s));
+    bool all_differ = std::all_of(at.begin(), at.end(), [&](size_t i) {
+      return differs(r.index.solutions[i]);
+    });
+    if (all_differ) {
+      goal = centre(s);
+      break;
+    }
+  }
+  ASSERT_FALSE(goal.empty());
+  PathResult p = plan_path(r, ev, centre(*start), goal, 0);
+  EXPECT_EQ(p.outcome, PathOutcome::DifferentSigns);
+  EXPECT_TRUE(p.waypoints.empty());
+  EXPECT_FALSE(std::count(p.goal_csncs.begin(), p.goal_csncs.end(), 0));
+}
+
+TEST(ResultIndex, RoundTripsExactlyAndRejectsDamage) {
+  LoadedResult& r = rrrrr();
+  const std::string bytes = encode_result_index(r.index);
+  EXPECT_EQ(encode_result_index(decode_result_index(bytes, "t")), bytes);
+  EXPECT_GT(r.index.links.size(), 1000u);
+  auto message = [](const std::string& b) {
+    try {
+      decode_result_index(b, "t");
+    } catch (const IndexError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message(bytes.substr(0, bytes.size() / 2)).find("truncated"), std::string::npos);
+  EXPECT_NE(message(bytes + "x").find("missing end marker"), std::string::npos);
+  std::string other = bytes;
+  other[14] = 2;  // the version follows the 14-byte magic
+  EXPECT_NE(message(other).find("result index version 2, this aspects reads version 1"),
+            std::string::npos);
+  std::string magic = bytes;
+  magic[0] = 'A';
+  EXPECT_NE(message(magic).find("bad magic"), std::string::npos);
+}
+
+TEST(ResultIndex, RecomputedWitnessesAreTheRecordedOnes) {
+  // Without link proofs (--no-cert) the index recomputes each witness with certify_link's
+  // rule; it must be the very double the proof used.
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  AspectsConfig cfg;
+  cfg.eps = 1.5;
+  AspectsResult with = compute_aspects(m, cfg);
+  ASSERT_EQ(with.link_proofs.size(), with.certified_links.size());
+  ASSERT_GT(with.certified_links.size(), 10u);
+  AspectsResult without = with;
+  without.link_proofs = LinkRecords(m.n());
+  ResultIndex a = build_result_index(m, with, 53, cfg.tau, cfg.eps, "x");
+  ResultIndex b = build_result_index(m, without, 53, cfg.tau, cfg.eps, "x");
+  ASSERT_EQ(a.links.size(), b.links.size());
+  for (size_t i = 0; i < a.links.size(); ++i) EXPECT_EQ(a.links[i].witness, b.links[i].witness);
+}
+
+TEST(ResultIndex, EveryTruncationAndByteFlipIsRejectedOrReadNeverACrash) {
+  // A small index (the seam model of tests/models), damaged at every length and at random
+  // bytes: decode either throws IndexError or returns; under the sanitizers it must not
+  // read out of bounds or allocate from a damaged count.
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_TEST_MODELS_DIR) + "/seam_pose.robot");
+  AspectsConfig cfg;
+  cfg.eps = 0.1;
+  AspectsResult res = compute_aspects(m, cfg);
+  const std::string bytes =
+      encode_result_index(build_result_index(m, res, 53, cfg.tau, cfg.eps, "seam"));
+  int rejected = 0;
+  for (size_t len = 0; len < bytes.size(); ++len) {
+    try {
+      decode_result_index(bytes.substr(0, len), "t");
+    } catch (const IndexError&) {
+      ++rejected;
+    }
+  }
+  EXPECT_EQ(rejected, int(bytes.size()));  // no proper prefix is a valid index
+  std::mt19937 g(11);
+  for (int k = 0; k < 3000; ++k) {
+    std::string d = bytes;
+    size_t at = std::uniform_int_distribution<size_t>(0, d.size() - 1)(g);
+    d[at] = char(std::uniform_int_distribution<int>(0, 255)(g));
+    try {
+      decode_result_index(d, "t");
+    } catch (const IndexError&) {
+    }
+  }
+}
