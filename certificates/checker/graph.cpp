@@ -26,6 +26,11 @@ void UnionFind::unite(int a, int b) {
   if (a != b) parent[std::max(a, b)] = std::min(a, b);
 }
 
+void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x) {
+  mpfi_mul_si(t, two_pi, k);
+  mpfi_add_d(t, t, x);
+}
+
 std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::vector<bool>& periodic,
                                                  const Ival& two_pi, size_t max_pairs) {
   const int nv = R.nv;
@@ -44,8 +49,10 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
         std::array<double, 2>& s = S[(b * nv + v) * 3 + k + 1];
         s = {lo, hi};
         if (!k || !periodic[v]) continue;
-        mpfi_mul_si(t, two_pi, k), mpfi_add_d(t, t, lo), s[0] = t.lo();
-        mpfi_mul_si(t, two_pi, k), mpfi_add_d(t, t, hi), s[1] = t.hi();
+        shift_by_periods(t, two_pi, k, lo);
+        s[0] = t.lo();
+        shift_by_periods(t, two_pi, k, hi);
+        s[1] = t.hi();
       }
     }
   // Sweep on the dimension d where boxes are thinnest relative to their spread: items are

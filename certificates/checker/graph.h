@@ -28,6 +28,10 @@ struct OutBoxes {
   const double* box(size_t i) const { return &lohi[i * 2 * nv]; }
 };
 
+// t := x + 2πk in MPFI: the bound x of a box shifted by k periods. Its ends rounded outward
+// (graph M) or inward (links) to doubles give the shifted bound each check needs.
+void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x);
+
 // Pairs (a, b), a < b, such that for some shift k (k_v ∈ {−1, 0, 1} on periodic variables)
 // a meets b + 2πk with the shifted bounds rounded outward; a superset of the pairs that
 // share a point modulo 2π. Throws std::length_error beyond `max_pairs` pairs: boxes that
