@@ -36,7 +36,8 @@ void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x);
 // a meets b + 2πk with the shifted bounds rounded outward; a superset of the pairs that
 // share a point modulo 2π. Throws std::length_error beyond `max_pairs` pairs: boxes that
 // all overlap (one IMAGE for many cells) would make M quadratic in memory.
-std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::vector<bool>& periodic,
+std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
+                                                 const std::vector<bool>& periodic,
                                                  const Ival& two_pi, size_t max_pairs = SIZE_MAX);
 // Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
 // with s, joined by M) holding a solution box whose signs are all verified and equal s.
