@@ -18,7 +18,10 @@ static std::string hex_digest(EVP_MD_CTX* md) {
   EVP_DigestFinal_ex(md, d, &len);
   static const char* x = "0123456789abcdef";
   std::string s;
-  for (unsigned i = 0; i < len; ++i) s += {x[d[i] >> 4], x[d[i] & 15]};
+  for (unsigned i = 0; i < len; ++i) {
+    s += x[d[i] >> 4];
+    s += x[d[i] & 15];
+  }
   return s;
 }
 
@@ -50,10 +53,13 @@ const std::vector<std::string_view>& LineReader::next() {
   EVP_DigestUpdate(md_, line_buf_, size_t(n));
   if (line_buf_[n - 1] != '\n') malformed(line_, "truncated record (no newline at end of file)");
   fields_.clear();
-  size_t start = 0, len = size_t(n - 1);
+  size_t start = 0;
+  const size_t len = size_t(n - 1);
   for (size_t i = 0; i <= len; ++i) {
-    unsigned char c = i < len ? (unsigned char)line_buf_[i] : ' ';
-    if (c != ' ' && (c < 0x21 || c > 0x7e)) malformed(line_, "byte " + std::to_string(c) + " is not printable ASCII");
+    // A space after the last byte closes the last field.
+    const unsigned char c = i < len ? (unsigned char)line_buf_[i] : ' ';
+    if (c != ' ' && (c < 0x21 || c > 0x7e))
+      malformed(line_, "byte " + std::to_string(c) + " is not printable ASCII");
     if (c != ' ') continue;
     if (i == start) malformed(line_, len ? "leading, trailing or double space" : "empty line");
     fields_.emplace_back(line_buf_ + start, i - start);
@@ -72,9 +78,10 @@ std::string LineReader::raw(size_t n) {
   // display differently from what the checker parses ("l = 1 #\rl = 2" shows l = 2).
   for (char c : s) {
     if (c == '\n') ++line_;
-    unsigned char u = (unsigned char)c;
+    const unsigned char u = (unsigned char)c;
     if (u != '\n' && u != '\t' && (u < 0x20 || u > 0x7e))
-      malformed(line_ + 1, "byte " + std::to_string(u) + " in the model text is not printable ASCII");
+      malformed(line_ + 1,
+                "byte " + std::to_string(u) + " in the model text is not printable ASCII");
   }
   int c = std::fgetc(f_);  // the model text is followed by exactly one '\n'
   if (c != '\n') malformed(line_ + 1, "model text not followed by a newline (wrong byte count?)");
@@ -89,13 +96,26 @@ void LineReader::expect_eof() {
 
 std::string LineReader::file_sha256() { return hex_digest(md_); }
 
+// At most 18 digits, so that the value fits an int64_t without overflow checks.
 int64_t parse_int(std::string_view s, long rec) {
-  size_t i = s[0] == '-' ? 1 : 0;
-  bool ok = s.size() > i && s.size() - i <= 18 && !(s[i] == '0' && s.size() > i + 1) && s != "-0";
+  const size_t i = s[0] == '-' ? 1 : 0;
+  const size_t digits = s.size() - i;
+  bool ok = digits >= 1 && digits <= 18;
+  ok = ok && !(s[i] == '0' && digits > 1) && s != "-0";
   int64_t v = 0;
-  for (size_t k = i; ok && k < s.size(); ++k) ok = s[k] >= '0' && s[k] <= '9', v = 10 * v + (s[k] - '0');
+  for (size_t k = i; ok && k < s.size(); ++k) {
+    ok = s[k] >= '0' && s[k] <= '9';
+    v = 10 * v + (s[k] - '0');
+  }
   if (!ok) malformed(rec, "bad integer '" + std::string(s) + "'");
   return i ? -v : v;
+}
+
+// The value of a lowercase hexadecimal digit, or -1.
+static int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  return -1;
 }
 
 // The grammar of glibc's printf("%a") for a finite double: -?0x1(.H*[1-f])?p[+-]E for a
@@ -103,21 +123,25 @@ int64_t parse_int(std::string_view s, long rec) {
 // 0x0p+0 for zero. Anything else (decimal, upper case, trailing zeros, inf, nan) is
 // malformed. The value mantissa·2^(exponent − 4·digits) is exact in binary64.
 double parse_real(std::string_view s, long rec) {
-  auto hexval = [](char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1; };
-  size_t i = s[0] == '-' ? 1 : 0;
+  const size_t i = s[0] == '-' ? 1 : 0;
   bool ok = s.size() >= i + 6 && s.substr(i, 2) == "0x" && (s[i + 2] == '0' || s[i + 2] == '1');
-  int lead = ok ? s[i + 2] - '0' : 0, digits = 0;
+  const int lead = ok ? s[i + 2] - '0' : 0;
+  int digits = 0;
   uint64_t mant = uint64_t(lead);
   size_t k = i + 3;
   if (ok && s[k] == '.') {
-    for (++k; k < s.size() && hexval(s[k]) >= 0; ++k, ++digits) mant = mant * 16 + uint64_t(hexval(s[k]));
+    for (++k; k < s.size() && hex_digit(s[k]) >= 0; ++k) {
+      mant = mant * 16 + uint64_t(hex_digit(s[k]));
+      ++digits;
+    }
     ok = digits >= 1 && digits <= 13 && s[k - 1] != '0';
   }
   ok = ok && k + 2 < s.size() && s[k] == 'p' && (s[k + 1] == '+' || s[k + 1] == '-');
   std::string_view e = ok ? s.substr(k + 2) : std::string_view();
   ok = ok && !e.empty() && e.size() <= 4 && !(e[0] == '0' && e.size() > 1) &&
        e.find_first_not_of("0123456789") == std::string_view::npos;
-  int exp = ok ? std::atoi(std::string(e).c_str()) * (s[k + 1] == '-' ? -1 : 1) : 0;
+  const int sign = ok && s[k + 1] == '-' ? -1 : 1;  // s[k + 1] exists only when ok
+  const int exp = ok ? std::atoi(std::string(e).c_str()) * sign : 0;
   if (ok && lead == 1) ok = exp >= -1022 && exp <= 1023;
   if (ok && lead == 0) ok = digits ? exp == -1022 : (exp == 0 && s[k + 1] == '+');
   if (!ok) malformed(rec, "bad real '" + std::string(s) + "' (expected a %a hexadecimal float)");
@@ -125,15 +149,17 @@ double parse_real(std::string_view s, long rec) {
   return i ? -v : v;
 }
 
-const std::vector<std::string_view>& LineReader::expect(const std::vector<const char*>& words, size_t extra) {
+const std::vector<std::string_view>& LineReader::expect(const std::vector<const char*>& words,
+                                                       size_t extra) {
   const std::vector<std::string_view>& f = next();
   bool ok = f.size() == words.size() + extra;
   for (size_t i = 0; ok && i < words.size(); ++i) ok = f[i] == words[i];
   if (!ok) {
     std::string want;
     for (auto w : words) want += std::string(want.empty() ? "" : " ") + w;
-    malformed(line_, "expected '" + want + "' and " + std::to_string(extra) + " field(s), found '" + std::string(f[0]) +
-                         "' with " + std::to_string(f.size()) + " field(s)");
+    const std::string wanted = "expected '" + want + "' and " + std::to_string(extra);
+    const std::string found = "found '" + std::string(f[0]) + "' with " + std::to_string(f.size());
+    malformed(line_, wanted + " field(s), " + found + " field(s)");
   }
   return f;
 }

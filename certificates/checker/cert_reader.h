@@ -20,7 +20,8 @@ namespace cc {
 struct CertError : std::runtime_error {
   bool malformed;  // true: exit 2; false: exit 1 (REJECTED)
   long record;
-  CertError(bool m, long r, const std::string& why) : std::runtime_error(why), malformed(m), record(r) {}
+  CertError(bool m, long r, const std::string& why)
+      : std::runtime_error(why), malformed(m), record(r) {}
 };
 [[noreturn]] void malformed(long record, const std::string& why);
 [[noreturn]] void rejected(long record, const std::string& why);
@@ -34,7 +35,8 @@ class LineReader {
   // Reads the next record and splits it into fields; checks the lexical rules.
   const std::vector<std::string_view>& next();
   // next(), then requires the leading fields == words and `extra` further fields.
-  const std::vector<std::string_view>& expect(const std::vector<const char*>& words, size_t extra);
+  const std::vector<std::string_view>& expect(const std::vector<const char*>& words,
+                                              size_t extra);
   // Reads exactly `n` raw bytes (the embedded model text) and counts its lines.
   std::string raw(size_t n);
   void expect_eof();           // nothing may follow the last record

@@ -13,7 +13,19 @@
 namespace cc {
 
 static bool is_zero(const Ival& x) { return mpfr_zero_p(x.L()) && mpfr_zero_p(x.R()); }
-static void set_half_line(Ival& x) { mpfr_set_zero(x.L(), 1), mpfr_set_inf(x.R(), 1); }  // [0, +inf]
+// The status of a variable's interval: 2 empty, 0 bounded, 1 unbounded.
+static int var_status(const Ival& x) {
+  if (x.empty()) return 2;
+  return x.bounded() ? 0 : 1;
+}
+
+// A divisor (or the base of a negative power) that contains 0: the result is defined nowhere
+// when it is [0, 0] (status 2), else nothing is known of it (the entire line, status 1).
+static int pole(Ival& r, const Ival& d) {
+  if (is_zero(d)) return 2;
+  r.entire();
+  return 1;
+}
 
 Evaluator::Evaluator(const Model& m) : m_(m) {
   const size_t N = m.nodes.size();
@@ -30,9 +42,11 @@ Evaluator::Evaluator(const Model& m) : m_(m) {
   for (size_t id = 0; id < N; ++id) {
     const Node& n = m.nodes[id];
     if (n.dep) continue;
-    int st = std::max(n.a >= 0 ? cstat_[n.a] : 0, n.b >= 0 ? cstat_[n.b] : 0);
-    cstat_[id] = st == 2 ? 2 : std::max(st, apply(int(id), cval_[id], n.a >= 0 ? &cval_[n.a] : nullptr,
-                                                  n.b >= 0 ? &cval_[n.b] : nullptr));
+    const Ival* a = n.a >= 0 ? &cval_[n.a] : nullptr;
+    const Ival* b = n.b >= 0 ? &cval_[n.b] : nullptr;
+    const int st = std::max(n.a >= 0 ? cstat_[n.a] : 0, n.b >= 0 ? cstat_[n.b] : 0);
+    cstat_[id] = st;
+    if (st < 2) cstat_[id] = std::max(st, apply(int(id), cval_[id], a, b));
   }
   all_eqs = closure(m.eqs);
   all_atoms = closure(m.atoms);
@@ -107,8 +121,13 @@ void Evaluator::sincos(const Ival& a, Ival& s, Ival& c) {
     if ((t & 3) == 2) mpfr_nextabove(t1_.R());
     if ((t >> 2) == 1) mpfr_nextbelow(t2_.L());
     if ((t >> 2) == 2) mpfr_nextabove(t2_.R());
-    if (e == 0) mpfi_set(s, t1_), mpfi_set(c, t2_);
-    else mpfi_union(s, s, t1_), mpfi_union(c, c, t2_);
+    if (e == 0) {
+      mpfi_set(s, t1_);
+      mpfi_set(c, t2_);
+    } else {
+      mpfi_union(s, s, t1_);
+      mpfi_union(c, c, t2_);
+    }
   }
   extremum(s, a, 0.5, lo, hi);
   extremum(c, a, 0.0, lo, hi);
@@ -140,7 +159,7 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
       else mpfi_mul(r, *a, *b);
       break;
     case Op::Div:  // b ∋ 0: defined nowhere if b = [0, 0], else no information
-      if (b->has_zero()) return is_zero(*b) ? 2 : (r.entire(), 1);
+      if (b->has_zero()) return pole(r, *b);
       mpfi_div(r, *a, *b);
       break;
     case Op::Min:
@@ -154,7 +173,7 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
     case Op::Neg: mpfi_neg(r, *a); break;
     case Op::Sqr: mpfi_sqr(r, *a); break;
     case Op::Pow:
-      if (n.k < 0 && a->has_zero()) return is_zero(*a) ? 2 : (r.entire(), 1);
+      if (n.k < 0 && a->has_zero()) return pole(r, *a);
       power(r, *a, n.k);
       break;
     case Op::Sqrt:
@@ -207,10 +226,17 @@ bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
     const Node& n = m_.nodes[id];
     Ival& r = val_[id];
     int& st = st_[id];
-    if (!n.dep) mpfi_set(r, cval_[id]), st = cstat_[id];
-    else if (n.op == Op::Var) mpfi_set(r, box[n.k]), st = r.empty() ? 2 : r.bounded() ? 0 : 1;
-    else if ((st = std::max(st_[n.a], n.b >= 0 ? st_[n.b] : 0)) < 2)
-      st = std::max(st, apply(id, r, &val_[n.a], n.b >= 0 ? &val_[n.b] : nullptr));
+    if (!n.dep) {
+      mpfi_set(r, cval_[id]);
+      st = cstat_[id];
+    } else if (n.op == Op::Var) {
+      mpfi_set(r, box[n.k]);
+      st = var_status(r);
+    } else {
+      const Ival* b = n.b >= 0 ? &val_[n.b] : nullptr;
+      st = std::max(st_[n.a], n.b >= 0 ? st_[n.b] : 0);
+      if (st < 2) st = std::max(st, apply(id, r, &val_[n.a], b));
+    }
     if (mode != Mode::Truth && (st == 2 || (st == 1 && mode == Mode::Proof))) return false;
   }
   return true;
@@ -271,16 +297,26 @@ bool Evaluator::derive(int id) {
       break;
     case Op::Neg: mpfi_set_si(g_, -1); break;
     case Op::Sqr: mpfi_mul_si(g_, a, 2); break;
-    case Op::Pow: power(g_, a, n.k - 1), mpfi_mul_si(g_, g_, n.k); break;
+    case Op::Pow:
+      power(g_, a, n.k - 1);
+      mpfi_mul_si(g_, g_, n.k);
+      break;
     case Op::Sqrt:  // not differentiable at 0
       if (r.has_zero()) return false;
-      mpfi_mul_si(g_, r, 2), mpfi_inv(g_, g_);
+      mpfi_mul_si(g_, r, 2);
+      mpfi_inv(g_, g_);
       break;
     case Op::Exp: mpfi_set(g_, r); break;
     case Op::Log: mpfi_inv(g_, a); break;
     case Op::Sin: trig(true, n.a, a, g_); break;
-    case Op::Cos: trig(false, n.a, a, g_), mpfi_neg(g_, g_); break;
-    case Op::Tan: mpfi_sqr(g_, r), mpfi_add_si(g_, g_, 1); break;
+    case Op::Cos:
+      trig(false, n.a, a, g_);
+      mpfi_neg(g_, g_);
+      break;
+    case Op::Tan:
+      mpfi_sqr(g_, r);
+      mpfi_add_si(g_, g_, 1);
+      break;
     case Op::Abs:
       if (!a.sign()) return false;
       mpfi_set_si(g_, a.sign());
@@ -294,7 +330,11 @@ bool Evaluator::derive(int id) {
       mpfi_inv(g_, g_);
       if (n.op == Op::Acos) mpfi_neg(g_, g_);
       break;
-    case Op::Atan: mpfi_sqr(g_, a), mpfi_add_si(g_, g_, 1), mpfi_inv(g_, g_); break;
+    case Op::Atan:
+      mpfi_sqr(g_, a);
+      mpfi_add_si(g_, g_, 1);
+      mpfi_inv(g_, g_);
+      break;
     case Op::Const: case Op::Pi: case Op::Var: return true;
   }
   for (int v = 0; v < nv; ++v) {
@@ -351,6 +391,20 @@ bool Evaluator::hull_both(Ival& a, const Ival& s) {
   return true;
 }
 
+// r ∩= [0, +inf]; false when r becomes empty.
+bool Evaluator::meet_nonnegative(Ival& r) {
+  mpfr_set_zero(t1_.L(), 1);
+  mpfr_set_inf(t1_.R(), 1);
+  return r.meet(t1_);
+}
+
+// r = a²: r ∩= [0, +inf], then a ∩= ±sqrt(r).
+bool Evaluator::project_square(Ival& r, Ival& a) {
+  if (!meet_nonnegative(r)) return false;
+  mpfi_sqrt(t1_, r);
+  return hull_both(a, t1_);
+}
+
 bool Evaluator::backward(int id, Ival* box) {
   const Node& n = m_.nodes[id];
   if (!n.dep) return true;
@@ -359,11 +413,21 @@ bool Evaluator::backward(int id, Ival* box) {
   Ival* b = n.b >= 0 ? &val_[n.b] : nullptr;
   switch (n.op) {
     case Op::Var: return box[n.k].meet(r);
-    case Op::Add: return mpfi_sub(t1_, r, *b), cut(*a, t1_) && (mpfi_sub(t1_, r, *a), cut(*b, t1_));
-    case Op::Sub: return mpfi_add(t1_, r, *b), cut(*a, t1_) && (mpfi_sub(t1_, *a, r), cut(*b, t1_));
-    case Op::Neg: return mpfi_neg(t1_, r), cut(*a, t1_);
+    case Op::Add:  // a ∈ r − b, then b ∈ r − a
+      mpfi_sub(t1_, r, *b);
+      if (!cut(*a, t1_)) return false;
+      mpfi_sub(t1_, r, *a);
+      return cut(*b, t1_);
+    case Op::Sub:  // a ∈ r + b, then b ∈ a − r
+      mpfi_add(t1_, r, *b);
+      if (!cut(*a, t1_)) return false;
+      mpfi_sub(t1_, *a, r);
+      return cut(*b, t1_);
+    case Op::Neg:
+      mpfi_neg(t1_, r);
+      return cut(*a, t1_);
     case Op::Mul:
-      if (n.a == n.b) goto square;
+      if (n.a == n.b) return project_square(r, *a);
       if (!b->has_zero()) {
         mpfi_div(t1_, r, *b);
         if (!cut(*a, t1_)) return false;
@@ -384,39 +448,53 @@ bool Evaluator::backward(int id, Ival* box) {
       }
       return true;
     case Op::Min:  // min(a, b) >= lo(r) forces a, b >= lo(r); max(a, b) <= hi(r) likewise
-      mpfr_set(t1_.L(), r.L(), MPFR_RNDD), mpfr_set_inf(t1_.R(), 1);
+      mpfr_set(t1_.L(), r.L(), MPFR_RNDD);
+      mpfr_set_inf(t1_.R(), 1);
       return cut(*a, t1_) && cut(*b, t1_);
     case Op::Max:
-      mpfr_set_inf(t1_.L(), -1), mpfr_set(t1_.R(), r.R(), MPFR_RNDU);
+      mpfr_set_inf(t1_.L(), -1);
+      mpfr_set(t1_.R(), r.R(), MPFR_RNDU);
       return cut(*a, t1_) && cut(*b, t1_);
-    case Op::Sqr:
-    square:
-      return set_half_line(t1_), r.meet(t1_) && (mpfi_sqrt(t1_, r), hull_both(*a, t1_));
+    case Op::Sqr: return project_square(r, *a);
     case Op::Pow: {
       if (n.k < 0) return true;  // no projection: weak but sound
       bool even = n.k % 2 == 0;
-      if (even) {
-        set_half_line(t1_);
-        if (!r.meet(t1_)) return false;
-      }
+      if (even && !meet_nonnegative(r)) return false;
       mpfr_rootn_ui(t1_.L(), r.L(), (unsigned long)n.k, MPFR_RNDD);
       mpfr_rootn_ui(t1_.R(), r.R(), (unsigned long)n.k, MPFR_RNDU);
       return even ? hull_both(*a, t1_) : cut(*a, t1_);
     }
-    case Op::Sqrt: return set_half_line(t1_), r.meet(t1_) && (mpfi_sqr(t1_, r), cut(*a, t1_));
-    case Op::Exp: return set_half_line(t1_), r.meet(t1_) && (mpfi_log(t1_, r), cut(*a, t1_));
-    case Op::Log: return mpfi_exp(t1_, r), cut(*a, t1_);
-    case Op::Abs: return set_half_line(t1_), r.meet(t1_) && hull_both(*a, r);
-    case Op::Asin: return mpfi_sin(t1_, r), cut(*a, t1_);  // a = sin(asin a) ∈ sin(r)
-    case Op::Acos: return mpfi_cos(t1_, r), cut(*a, t1_);
-    case Op::Atan: return mpfi_tan(t1_, r), !t1_.bounded() || cut(*a, t1_);
+    case Op::Sqrt:  // a ∈ (r ∩ [0, +inf])²
+      if (!meet_nonnegative(r)) return false;
+      mpfi_sqr(t1_, r);
+      return cut(*a, t1_);
+    case Op::Exp:  // a ∈ log(r ∩ [0, +inf])
+      if (!meet_nonnegative(r)) return false;
+      mpfi_log(t1_, r);
+      return cut(*a, t1_);
+    case Op::Log:
+      mpfi_exp(t1_, r);
+      return cut(*a, t1_);
+    case Op::Abs: return meet_nonnegative(r) && hull_both(*a, r);
+    case Op::Asin:  // a = sin(asin a) ∈ sin(r)
+      mpfi_sin(t1_, r);
+      return cut(*a, t1_);
+    case Op::Acos:
+      mpfi_cos(t1_, r);
+      return cut(*a, t1_);
+    case Op::Atan:  // no information where tan(r) is unbounded
+      mpfi_tan(t1_, r);
+      return !t1_.bounded() || cut(*a, t1_);
     case Op::Sin:
     case Op::Cos:  // r ∩ [−1, 1], then the preimage of r in a: one branch, or all of them
       mpfi_interv_si(t1_, -1, 1);
       if (!r.meet(t1_)) return false;
       trig(n.op == Op::Cos, n.a, *a, t4_);
-      if (mpfi_is_inside(t4_, r) > 0 || !(std::fabs(a->lo()) < 1e6 && std::fabs(a->hi()) < 1e6)) return true;
-      if (a->hi() - a->lo() < 3 && monotone_projection(n.op, r, *a, t4_)) return mpfr_cmp(a->L(), a->R()) <= 0;
+      // Nothing to remove when the image is already inside r; huge arguments are left alone.
+      if (mpfi_is_inside(t4_, r) > 0) return true;
+      if (!(std::fabs(a->lo()) < 1e6 && std::fabs(a->hi()) < 1e6)) return true;
+      if (a->hi() - a->lo() < 3 && monotone_projection(n.op, r, *a, t4_))
+        return mpfr_cmp(a->L(), a->R()) <= 0;
       return project_general(n.op, r, *a);
     case Op::Tan: case Op::Const: case Op::Pi:
       return true;
@@ -449,7 +527,8 @@ bool Evaluator::monotone_projection(Op op, const Ival& r, Ival& a, const Ival& f
   mpfi_mul_d(t3_, pi_, j + 1 + off);
   if (mpfr_cmp(t3_.L(), a.R()) < 0) return false;
   bool dec = std::fmod(std::fabs(j), 2.0) == 0;
-  int s = (op == Op::Sin) == dec ? -1 : 1;  // sin: −asin on decreasing branches; cos: −acos on increasing
+  // sin: −asin on decreasing branches; cos: −acos on increasing ones.
+  int s = (op == Op::Sin) == dec ? -1 : 1;
   double c = (op == Op::Cos && dec) ? j : j + 1;
   if (dec ? mpfr_cmp(r.R(), fa.R()) < 0 : mpfr_cmp(r.L(), fa.L()) > 0) {
     branch_inverse(op, dec ? r.R() : r.L(), s, c, t2_);
@@ -477,7 +556,8 @@ bool Evaluator::project_general(Op op, const Ival& r, Ival& a) {
       if (branch == 0) mpfi_set(t2_, t1_);
       else if (op == Op::Sin) mpfi_sub(t2_, pi_, t1_);
       else mpfi_neg(t2_, t1_);
-      if (t2_.hi() + k * P < a.lo() - 1e-6 || t2_.lo() + k * P > a.hi() + 1e-6) continue;  // clearly misses a
+      // A piece that clearly misses a (in double, with a margin) is skipped.
+      if (t2_.hi() + k * P < a.lo() - 1e-6 || t2_.lo() + k * P > a.hi() + 1e-6) continue;
       mpfi_mul_si(t3_, two_pi, long(k));
       mpfi_add(t2_, t2_, t3_);
       mpfi_intersect(t2_, t2_, a);

@@ -1,8 +1,9 @@
 // eval.h — interval evaluation of the model's expression DAG in MPFI: natural forward
 // evaluation in two modes (Proof: everything must be defined and finite on the whole box;
 // Refute: partially defined functions are evaluated on the part of the box where they are
-// defined), the three-valued truth of the constraints (FORMAT.md, "Constraints"), forward-mode interval automatic differentiation for the Jacobians, and
-// HC4-Revise (forward evaluation, then backward projections that never remove a solution).
+// defined), the three-valued truth of the constraints (FORMAT.md, "Constraints"),
+// forward-mode interval automatic differentiation for the Jacobians, and HC4-Revise (forward
+// evaluation, then backward projections that never remove a solution).
 #pragma once
 
 #include <vector>
@@ -65,6 +66,8 @@ class Evaluator {
   bool project_general(Op op, const Ival& r, Ival& a);
   void branch_inverse(Op op, mpfr_srcptr y, int s, double c, Ival& out);
   bool hull_both(Ival& a, const Ival& s);  // a ∩= (s ∪ −s)
+  bool meet_nonnegative(Ival& r);
+  bool project_square(Ival& r, Ival& a);
 
   const Model& m_;
   std::vector<Ival> val_, der_, cval_;

@@ -14,7 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   size_t a = s.find("\nmodel "), b = s.find('\n', a + 1), e = s.find("\nend-model\n", b);
   if (a != std::string::npos && b != std::string::npos && e != std::string::npos) {
     std::string text = s.substr(b + 1, e - b - 1);
-    s = s.substr(0, a + 1) + "model " + std::to_string(text.size()) + " " + cc::sha256_hex(text) + s.substr(b);
+    const std::string record = "model " + std::to_string(text.size()) + " " + cc::sha256_hex(text);
+    s = s.substr(0, a + 1) + record + s.substr(b);
   }
   FILE* f = s.empty() ? nullptr : fmemopen(&s[0], s.size(), "rb");
   cc::CheckOptions o;

@@ -22,11 +22,18 @@ int UnionFind::find(int x) {
 }
 
 void UnionFind::unite(int a, int b) {
-  a = find(a), b = find(b);
+  a = find(a);
+  b = find(b);
   if (a != b) parent[std::max(a, b)] = std::min(a, b);
 }
 
-std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::vector<bool>& periodic,
+void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x) {
+  mpfi_mul_si(t, two_pi, k);
+  mpfi_add_d(t, t, x);
+}
+
+std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
+                                                 const std::vector<bool>& periodic,
                                                  const Ival& two_pi, size_t max_pairs) {
   const int nv = R.nv;
   const size_t N = R.size();
@@ -39,21 +46,30 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::v
   for (size_t b = 0; b < N; ++b)
     for (int v = 0; v < nv; ++v) {
       const double lo = R.box(b)[2 * v], hi = R.box(b)[2 * v + 1];
-      hlo[v] = std::min(hlo[v], lo), hhi[v] = std::max(hhi[v], hi), mean[v] += (hi - lo) / double(N);
+      hlo[v] = std::min(hlo[v], lo);
+      hhi[v] = std::max(hhi[v], hi);
+      mean[v] += (hi - lo) / double(N);
       for (int k = -1; k <= 1; ++k) {
         std::array<double, 2>& s = S[(b * nv + v) * 3 + k + 1];
         s = {lo, hi};
         if (!k || !periodic[v]) continue;
-        mpfi_mul_si(t, two_pi, k), mpfi_add_d(t, t, lo), s[0] = t.lo();
-        mpfi_mul_si(t, two_pi, k), mpfi_add_d(t, t, hi), s[1] = t.hi();
+        shift_by_periods(t, two_pi, k, lo);
+        s[0] = t.lo();
+        shift_by_periods(t, two_pi, k, hi);
+        s[1] = t.hi();
       }
     }
   // Sweep on the dimension d where boxes are thinnest relative to their spread: items are
   // the boxes and, if d is periodic, their copies shifted in d that can meet the hull.
   int d = 0;
   double best = -1;
-  for (int v = 0; v < nv; ++v)
-    if ((hhi[v] - hlo[v]) / (mean[v] + 1e-300) > best) best = (hhi[v] - hlo[v]) / (mean[v] + 1e-300), d = v;
+  for (int v = 0; v < nv; ++v) {
+    const double spread = (hhi[v] - hlo[v]) / (mean[v] + 1e-300);
+    if (spread > best) {
+      best = spread;
+      d = v;
+    }
+  }
   struct Item {
     double lo, hi;
     int id, k;
@@ -114,7 +130,9 @@ long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, u
     for (size_t b = 0; b < N; ++b) {
       if (!R.solution[b] || (R.pos[b] & full) != s || (R.neg[b] & full) != (~s & full)) continue;
       int r = uf.find(int(b));
-      if (!counted[r]) counted[r] = 1, ++total;
+      if (counted[r]) continue;
+      counted[r] = 1;
+      ++total;
     }
   }
   return total;
@@ -126,7 +144,10 @@ long filtered_count(const std::vector<int64_t>& sizes) {
   long cut = long(sizes.size());
   for (size_t i = 0; i + 1 < sizes.size(); ++i) {
     double r = double(sizes[i]) / double(sizes[i + 1]);
-    if (r > best) best = r, cut = long(i) + 1;
+    if (r > best) {
+      best = r;
+      cut = long(i) + 1;
+    }
   }
   return best < 2 ? long(sizes.size()) : cut;
 }

@@ -28,11 +28,16 @@ struct OutBoxes {
   const double* box(size_t i) const { return &lohi[i * 2 * nv]; }
 };
 
+// t := x + 2πk in MPFI: the bound x of a box shifted by k periods. Its ends rounded outward
+// (graph M) or inward (links) to doubles give the shifted bound each check needs.
+void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x);
+
 // Pairs (a, b), a < b, such that for some shift k (k_v ∈ {−1, 0, 1} on periodic variables)
 // a meets b + 2πk with the shifted bounds rounded outward; a superset of the pairs that
 // share a point modulo 2π. Throws std::length_error beyond `max_pairs` pairs: boxes that
 // all overlap (one IMAGE for many cells) would make M quadratic in memory.
-std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R, const std::vector<bool>& periodic,
+std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
+                                                 const std::vector<bool>& periodic,
                                                  const Ival& two_pi, size_t max_pairs = SIZE_MAX);
 // Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
 // with s, joined by M) holding a solution box whose signs are all verified and equal s.

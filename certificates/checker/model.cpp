@@ -3,7 +3,8 @@
 // statement continues over newlines while a ( or [ is open. Grammar:
 //   expr := term (('+'|'-') term)*     term := unary (('*'|'/') unary)*
 //   unary := ('-'|'+') unary | power   power := primary ['^' ['-'] INTEGER]
-//   primary := NUMBER | pi | NAME | FUNC '(' expr ')' | (min|max) '(' expr ',' expr ')' | '(' expr ')'
+//   primary := NUMBER | pi | NAME | FUNC '(' expr ')' | (min|max) '(' expr ',' expr ')'
+//            | '(' expr ')'
 //   formula := conj ('or' conj)*       conj := fprim ('and' fprim)*
 //   fprim := '(' formula ')' | expr ('>='|'>'|'<='|'<') expr
 // Besides syntax it enforces what the proofs rely on: a square system, and periodic
@@ -38,8 +39,12 @@ std::vector<Token> lex(const std::string& s) {
   int depth = 0, line = 1, col = 1;
   size_t i = 0;
   auto adv = [&]() {
-    if (s[i] == '\n') ++line, col = 1;
-    else ++col;
+    if (s[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
     ++i;
   };
   auto digit = [&](size_t k) { return k < s.size() && std::isdigit((unsigned char)s[k]); };
@@ -59,7 +64,10 @@ std::vector<Token> lex(const std::string& s) {
       out.push_back({Tok::Ident, s.substr(b, i - b), l, co});
     } else if (digit(i) || (c == '.' && digit(i + 1))) {
       int dots = 0;
-      while (digit(i) || (i < s.size() && s[i] == '.')) dots += s[i] == '.', adv();
+      while (digit(i) || (i < s.size() && s[i] == '.')) {
+        if (s[i] == '.') ++dots;
+        adv();
+      }
       if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
         size_t k = i + 1;
         if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
@@ -90,8 +98,9 @@ const std::map<std::string, Op> kFunctions = {
     {"sqr", Op::Sqr}, {"sqrt", Op::Sqrt}, {"sin", Op::Sin},   {"cos", Op::Cos},
     {"tan", Op::Tan}, {"exp", Op::Exp},   {"log", Op::Log},   {"abs", Op::Abs},
     {"asin", Op::Asin}, {"acos", Op::Acos}, {"atan", Op::Atan}};
-const std::set<std::string> kReserved = {"robot", "constant", "let", "pose", "command", "equation",
-                                         "constraint", "factor", "in", "periodic", "pi", "min", "max", "and", "or"};
+const std::set<std::string> kReserved = {
+    "robot", "constant", "let", "pose", "command", "equation", "constraint", "factor",
+    "in", "periodic", "pi", "min", "max", "and", "or"};
 
 class Parser {
  public:
@@ -106,7 +115,8 @@ class Parser {
     if (m_.name.empty()) fail(1, 1, "missing 'robot NAME' statement");
     if (m_.pose.empty()) fail(e.line, e.col, "no pose variable");
     if (m_.pose.size() != m_.command.size() || m_.command.size() != m_.eqs.size())
-      fail(e.line, e.col, "the system is not square (poses, commands and equations differ in number)");
+      fail(e.line, e.col,
+           "the system is not square (poses, commands and equations differ in number)");
     check_periodic();
     return std::move(m_);
   }
@@ -115,7 +125,9 @@ class Parser {
   const Token& peek() const { return t_[p_]; }
   bool punct(const char* s) const { return peek().kind == Tok::Punct && peek().text == s; }
   bool word(const char* s) const { return peek().kind == Tok::Ident && peek().text == s; }
-  static bool relation(const Token& t) { return t.kind == Tok::Punct && (t.text[0] == '<' || t.text[0] == '>'); }
+  static bool relation(const Token& t) {
+    return t.kind == Tok::Punct && (t.text[0] == '<' || t.text[0] == '>');
+  }
   [[noreturn]] void bad(const Token& t, const std::string& msg) { fail(t.line, t.col, msg); }
   void expect(const char* s) {
     if (!punct(s)) bad(peek(), std::string("expected '") + s + "', found '" + peek().text + "'");
@@ -150,14 +162,16 @@ class Parser {
     const std::string& k = kw.text;
     if (k == "robot") {
       if (!m_.name.empty()) bad(kw, "duplicate 'robot' statement");
-      if (peek().kind != Tok::Ident && peek().kind != Tok::Number) bad(peek(), "expected the robot's name");
+      if (peek().kind != Tok::Ident && peek().kind != Tok::Number)
+        bad(peek(), "expected the robot's name");
       while (peek().kind != Tok::Newline) m_.name += t_[p_++].text;  // e.g. 3-RRR*
     } else if (k == "constant" || k == "let") {
       std::string name = new_name();
       expect("=");
       Token at = peek();
       int e = expr();
-      if (k == "constant" && m_.nodes[e].dep) bad(at, "constant '" + name + "' depends on a variable");
+      if (k == "constant" && m_.nodes[e].dep)
+        bad(at, "constant '" + name + "' depends on a variable");
       names_[name] = e;
     } else if (k == "pose" || k == "command") {
       Var v;
@@ -170,7 +184,10 @@ class Parser {
       expect(",");
       v.hi = const_expr();
       expect("]");
-      if (word("periodic")) v.periodic = true, ++p_;
+      if (word("periodic")) {
+        v.periodic = true;
+        ++p_;
+      }
       int index = int(m_.vars.size());
       if (index >= 64) bad(kw, "too many variables");
       m_.vars.push_back(v);
@@ -194,7 +211,8 @@ class Parser {
     } else {
       bad(kw, "unknown statement '" + k + "'");
     }
-    if (peek().kind != Tok::Newline) bad(peek(), "expected end of line, found '" + peek().text + "'");
+    if (peek().kind != Tok::Newline)
+      bad(peek(), "expected end of line, found '" + peek().text + "'");
     ++p_;
   }
 
@@ -216,21 +234,32 @@ class Parser {
   int formula(bool conj) {
     Depth guard(*this, !conj);
     std::vector<int> kids{conj ? fprim() : formula(true)};
-    while (word(conj ? "and" : "or")) ++p_, kids.push_back(conj ? fprim() : formula(true));
+    while (word(conj ? "and" : "or")) {
+      ++p_;
+      kids.push_back(conj ? fprim() : formula(true));
+    }
     if (kids.size() == 1) return kids[0];
     m_.formulas.push_back({conj ? Formula::And : Formula::Or, false, -1, kids});
     return int(m_.formulas.size()) - 1;
   }
   // A '(' group is a formula iff it holds a comparison, 'and' or 'or' (an expression never
   // does, so this is the reading the solver's try-formula-then-expression would find).
-  int fprim() {
-    bool group = false;
-    for (size_t i = p_, d = 0; punct("(") && t_[i].kind != Tok::End && !group; ++i) {
+  bool formula_group() const {
+    if (!punct("(")) return false;
+    size_t depth = 0;
+    for (size_t i = p_; t_[i].kind != Tok::End; ++i) {
       const Token& t = t_[i];
-      if (t.kind == Tok::Punct && (t.text == "(" || t.text == ")") && (t.text == "(" ? ++d : --d) == 0) break;
-      group = relation(t) || (t.kind == Tok::Ident && (t.text == "and" || t.text == "or"));
+      const bool open = t.kind == Tok::Punct && t.text == "(";
+      const bool close = t.kind == Tok::Punct && t.text == ")";
+      if (open) ++depth;
+      if (close) --depth;
+      if ((open || close) && depth == 0) return false;
+      if (relation(t) || (t.kind == Tok::Ident && (t.text == "and" || t.text == "or"))) return true;
     }
-    if (group) {
+    return false;
+  }
+  int fprim() {
+    if (formula_group()) {
       ++p_;
       int f = formula(false);
       expect(")");
@@ -238,7 +267,8 @@ class Parser {
     }
     Token at = peek();
     int lhs = expr();
-    if (!relation(peek())) bad(peek(), "expected a comparison ('>=', '>', '<=' or '<'), found '" + peek().text + "'");
+    if (!relation(peek()))
+      bad(peek(), "expected a comparison ('>=', '>', '<=' or '<'), found '" + peek().text + "'");
     const std::string rel = t_[p_++].text;
     int rhs = expr(), g = rel[0] == '>' ? add(Op::Sub, lhs, rhs) : add(Op::Sub, rhs, lhs);
     if (!m_.nodes[g].dep) bad(at, "comparison does not depend on any variable");
@@ -333,7 +363,8 @@ class Parser {
     for (size_t id = 0; id < N; ++id) {
       const Node& n = m_.nodes[id];
       if (n.op == Op::Var) bare[id] = n.dep;
-      if (n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg) bare[id] = bare[n.a] | (n.b >= 0 ? bare[n.b] : 0);
+      if (n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg)
+        bare[id] = bare[n.a] | (n.b >= 0 ? bare[n.b] : 0);
     }
     for (auto* roots : {&m_.eqs, &m_.factors, &m_.atoms})
       for (int r : *roots) {
@@ -345,7 +376,8 @@ class Parser {
       const Node& n = m_.nodes[id];
       if (n.a >= 0) live[n.a] = 1;
       if (n.b >= 0) live[n.b] = 1;
-      bool wraps = n.op == Op::Sin || n.op == Op::Cos || n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg;
+      const bool sum = n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg;
+      const bool wraps = sum || n.op == Op::Sin || n.op == Op::Cos;
       uint64_t under = (n.a >= 0 ? bare[n.a] : 0) | (n.b >= 0 ? bare[n.b] : 0);
       if (!wraps && (under & periodic)) fail_periodic(under & periodic);
     }
@@ -353,7 +385,8 @@ class Parser {
   [[noreturn]] void fail_periodic(uint64_t vars) {
     int v = 0;
     while (!(vars >> v & 1)) ++v;
-    bad(var_tok_[v], "periodic variable '" + m_.vars[v].name + "' must appear only inside sin() or cos()");
+    const std::string name = m_.vars[v].name;
+    bad(var_tok_[v], "periodic variable '" + name + "' must appear only inside sin() or cos()");
   }
 
   std::vector<Token> t_;
@@ -369,17 +402,20 @@ class Parser {
 
 Model parse_model(const std::string& text) { return Parser(text).run(); }
 
-}  // namespace cc
-
-namespace cc {
 namespace {
 
 // a·π + b with exact rationals; `ok` false when the node is not of that form (or too big).
 struct Affine {
   mpq_t a, b;
   bool ok = false;
-  Affine() { mpq_init(a), mpq_init(b); }
-  ~Affine() { mpq_clear(a), mpq_clear(b); }
+  Affine() {
+    mpq_init(a);
+    mpq_init(b);
+  }
+  ~Affine() {
+    mpq_clear(a);
+    mpq_clear(b);
+  }
   Affine(const Affine&) = delete;
   Affine& operator=(const Affine&) = delete;
 };
@@ -389,8 +425,11 @@ bool literal_value(const std::string& s, mpq_t out) {
   size_t e = s.find_first_of("eE");
   std::string digits, frac_part;
   long frac = 0, exp10 = 0;
-  for (size_t i = 0; i < std::min(e, s.size()); ++i)
-    if (s[i] != '.') digits += s[i], frac += s.find('.') < i;
+  for (size_t i = 0; i < std::min(e, s.size()); ++i) {
+    if (s[i] == '.') continue;
+    digits += s[i];
+    frac += s.find('.') < i;  // a digit after the point
+  }
   if (e != std::string::npos) {
     std::string x = s.substr(e + 1);
     if (x.size() > 7) return false;  // |exponent| < 10^6: the rational stays small
@@ -412,6 +451,12 @@ bool literal_value(const std::string& s, mpq_t out) {
 
 size_t bits(const mpq_t q) {  // the size of a rational, for the memory budget
   return mpz_sizeinbase(mpq_numref(q), 2) + mpz_sizeinbase(mpq_denref(q), 2);
+}
+
+// r := x / q, q a nonzero rational.
+void scale_div(Affine& r, const Affine& x, const mpq_t q) {
+  mpq_div(r.a, x.a, q);
+  mpq_div(r.b, x.b, q);
 }
 
 }  // namespace
@@ -441,17 +486,33 @@ bool exactly_one_period(const Model& m, const Var& v) {
     switch (n.op) {
       case Op::Const: r.ok = literal_value(m.literals[n.k], r.b); break;
       case Op::Pi: mpq_set_ui(r.a, 1, 1); break;
-      case Op::Add: mpq_add(r.a, x->a, y->a), mpq_add(r.b, x->b, y->b); break;
-      case Op::Sub: mpq_sub(r.a, x->a, y->a), mpq_sub(r.b, x->b, y->b); break;
-      case Op::Neg: mpq_neg(r.a, x->a), mpq_neg(r.b, x->b); break;
+      case Op::Add:
+        mpq_add(r.a, x->a, y->a);
+        mpq_add(r.b, x->b, y->b);
+        break;
+      case Op::Sub:
+        mpq_sub(r.a, x->a, y->a);
+        mpq_sub(r.b, x->b, y->b);
+        break;
+      case Op::Neg:
+        mpq_neg(r.a, x->a);
+        mpq_neg(r.b, x->b);
+        break;
       case Op::Mul:  // one factor must be rational (no π²)
-        if (mpq_sgn(y->a) == 0) mpq_mul(r.a, x->a, y->b), mpq_mul(r.b, x->b, y->b);
-        else if (mpq_sgn(x->a) == 0) mpq_mul(r.a, y->a, x->b), mpq_mul(r.b, y->b, x->b);
-        else r.ok = false;
+        if (mpq_sgn(y->a) == 0) {
+          mpq_mul(r.a, x->a, y->b);
+          mpq_mul(r.b, x->b, y->b);
+        } else if (mpq_sgn(x->a) == 0) {
+          mpq_mul(r.a, y->a, x->b);
+          mpq_mul(r.b, y->b, x->b);
+        } else {
+          r.ok = false;
+        }
         break;
       case Op::Div:  // by a nonzero rational only
         if (mpq_sgn(y->a) != 0 || mpq_sgn(y->b) == 0) r.ok = false;
-        else mpq_div(r.a, x->a, y->b), mpq_div(r.b, x->b, y->b);
+        else
+          scale_div(r, *x, y->b);
         break;
       default: r.ok = false;
     }

@@ -1,8 +1,9 @@
 // model.h — the checker's own representation of a robot model: an expression DAG whose
 // children always have smaller ids than their parents (so increasing id order is a forward
 // evaluation order), the variables in declaration order, the equations (lhs - rhs) and the
-// user factors, and the constraint formulas (paper 5.4). The parser is purely syntactic: literals are kept as decimal strings and
-// turned into enclosing MPFI intervals by the evaluator (mpfi_set_str), never via strtod.
+// user factors, and the constraint formulas (paper 5.4). The parser is purely syntactic:
+// literals are kept as decimal strings and turned into enclosing MPFI intervals by the
+// evaluator (mpfi_set_str), never via strtod.
 #pragma once
 
 #include <cstdint>

@@ -5,6 +5,7 @@
 // verdict is an MPFI operation (mpfi_mul_d is exact-input, outward-rounded output).
 #include "proofs.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cc {
@@ -24,11 +25,17 @@ static bool invert(std::vector<double> M, int n, std::vector<double>& inv) {
       std::swap(M[c * n + k], M[p * n + k]);
       std::swap(inv[c * n + k], inv[p * n + k]);
     }
-    for (int k = 0; k < n; ++k) M[c * n + k] /= piv, inv[c * n + k] /= piv;
+    for (int k = 0; k < n; ++k) {
+      M[c * n + k] /= piv;
+      inv[c * n + k] /= piv;
+    }
     for (int r = 0; r < n; ++r) {
       double f = M[r * n + c];
       if (r == c || f == 0) continue;
-      for (int k = 0; k < n; ++k) M[r * n + k] -= f * M[c * n + k], inv[r * n + k] -= f * inv[c * n + k];
+      for (int k = 0; k < n; ++k) {
+        M[r * n + k] -= f * M[c * n + k];
+        inv[r * n + k] -= f * inv[c * n + k];
+      }
     }
   }
   for (double v : inv)
@@ -75,21 +82,30 @@ void Prover::load(const double* lohi) {
   for (int v = 0; v < nv_; ++v) box[v].set(lohi[2 * v], lohi[2 * v + 1]);
 }
 
+// out := Σ_k C[k]·x[k] (k < n), each term an exact double times an interval, outward rounded.
+void Prover::dot(Ival& out, const double* C, const Ival* const* x) {
+  mpfi_set_si(out, 0);
+  for (int k = 0; k < n_; ++k) {
+    mpfi_mul_d(t1_, *x[k], C[k]);
+    mpfi_add(out, out, t1_);
+  }
+}
+
 void Prover::product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out) {
-  for (int i = 0; i < n_; ++i)
+  std::vector<const Ival*> column(n_);
+  for (int i = 0; i < n_; ++i) {
     for (int j = 0; j < n_; ++j) {
-      Ival& o = out[i * n_ + j];
-      mpfi_set_si(o, 0);
-      for (int k = 0; k < n_; ++k) mpfi_mul_d(t1_, J[k * n_ + j], C[i * n_ + k]), mpfi_add(o, o, t1_);
+      for (int k = 0; k < n_; ++k) column[k] = &J[k * n_ + j];
+      dot(out[i * n_ + j], C + i * n_, column.data());
     }
+  }
 }
 
 // b_ := C·f with f the values of the equations just evaluated.
 void Prover::rhs(const double* C) {
-  for (int i = 0; i < n_; ++i) {
-    mpfi_set_si(b_[i], 0);
-    for (int k = 0; k < n_; ++k) mpfi_mul_d(t1_, ev_.val(m_.eqs[k]), C[i * n_ + k]), mpfi_add(b_[i], b_[i], t1_);
-  }
+  std::vector<const Ival*> f(n_);
+  for (int k = 0; k < n_; ++k) f[k] = &ev_.val(m_.eqs[k]);
+  for (int i = 0; i < n_; ++i) dot(b_[i], C + i * n_, f.data());
 }
 
 const char* Prover::newton(const double* Q, const double* C) {
@@ -103,8 +119,9 @@ const char* Prover::newton(const double* Q, const double* C) {
   // q̌: the binary64 midpoint of Q~, clamped into it (any point of Q~ is sound).
   std::vector<double> qc(n);
   for (int j = 0; j < n; ++j) {
-    double lo = Q[2 * j], hi = Q[2 * j + 1], c = lo + 0.5 * (hi - lo);
-    qc[j] = !(c >= lo) ? lo : !(c <= hi) ? hi : c;
+    const double lo = Q[2 * j];
+    const double hi = Q[2 * j + 1];
+    qc[j] = std::min(std::max(lo + 0.5 * (hi - lo), lo), hi);
     w_[m_.command[j]].set(qc[j], qc[j]);
   }
   if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return "f is not defined at (x, q-check)";
@@ -263,7 +280,10 @@ bool Prover::refute_rec(std::vector<Ival>& b, int depth, int& budget) {
   double best = -1;
   for (int k = 0; k < nv_; ++k) {
     double w = b[k].hi() - b[k].lo();
-    if (w > best) best = w, v = k;
+    if (w > best) {
+      best = w;
+      v = k;
+    }
   }
   if (!(best > 0)) return false;
   std::vector<Ival> c = b;

@@ -45,6 +45,7 @@ class Prover {
   bool refute_rec(std::vector<Ival>& b, int depth, int& budget);
   void product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out);
   void rhs(const double* C);
+  void dot(Ival& out, const double* C, const Ival* const* x);
 
   Evaluator& ev_;
   const Model& m_;
