@@ -824,7 +824,7 @@ std::vector<Count> counts(const Verdict& v) {
           {"links", v.links, true},
           {"csncs", v.csncs, true},
           {"cuspidal", v.cuspidal, true},
-          {"cuspidal_csncs", v.cuspidal_csncs, false},
+          {"cuspidal_csncs", v.cuspidal_csncs, true},
           {"lower_bound", v.claimed, true},
           {"recomputed_lower_bound", v.recomputed, false},
           {"checked_lower_bound", v.checked, true}};
