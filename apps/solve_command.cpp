@@ -70,6 +70,26 @@ void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& 
   write_file_atomically(path, os.str());
 }
 
+// "One pose, two commands" witnesses (certified in the certificate's cuspidal section):
+// per CSNC with a witness, their count, whether the search listed them all, a few pairs.
+nlohmann::json cuspidal_json(const AspectsResult& r) {
+  const CuspidalWitnesses& w = r.cuspidal;
+  nlohmann::json per = nlohmann::json::array();
+  size_t next = 0;
+  for (size_t c = 0; c < w.count.size(); ++c) {
+    if (w.count[c] == 0) continue;
+    while (w.pose[next].csnc != int32_t(c)) ++next;
+    nlohmann::json examples = nlohmann::json::array();
+    for (size_t i = next; i < next + std::min<size_t>(3, size_t(w.count[c])); ++i)
+      examples.push_back({w.pose[i].a, w.pose[i].b});
+    per.push_back({{"csnc", c},
+                   {"one_pose_two_commands", w.count[c]},
+                   {"search", witness_search_name(w.search[c])},
+                   {"examples", examples}});
+  }
+  return {{"witnesses", w.pose.size()}, {"csncs_with_witness", per.size()}, {"per_csnc", per}};
+}
+
 nlohmann::json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r) {
   nlohmann::json j;
   j["version"] = ASPECTS_VERSION;
@@ -107,6 +127,7 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
                 {"separated_lower_bound", r.separation.lower_bound},
                 {"separated_representatives", r.separation.representatives},
                 {"sizes", r.csnc_sizes}};
+  j["cuspidal"] = cuspidal_json(r);
   nlohmann::json f = nlohmann::json::array();
   for (const auto& x : r.factors) f.push_back({{"expression", x.text}, {"origin", x.origin}});
   j["factors"] = f;

@@ -212,6 +212,13 @@ void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
     for (int32_t b : members[k]) put(" %d", b);
     end_line();
   }
+  line("cuspidal " + std::to_string(r.cuspidal.pose.size()));
+  for (const PoseWitness& w : r.cuspidal.pose) {
+    std::string shift;
+    for (int v = 0; v < nv; ++v) shift += "-0+"[w.shift(v) + 1];
+    put("W %d %d %d %s", w.csnc, w.a, w.b, shift.c_str());
+    end_line();
+  }
   line("claim filtered " + std::to_string(r.filtered));
   line("claim lower-bound " + std::to_string(r.separation.lower_bound));
   line("end " + std::to_string(lines_));

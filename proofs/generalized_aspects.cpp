@@ -343,6 +343,10 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   out.separation = separate_by_signs(out.boxes.size(), int(out.factors.size()), out.signs,
                                      out.certified, out.neighbors, &out.csnc);
   lap("components and separation");
+  // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC.
+  const WitnessSpace space(model.pose, model.command, periodic);
+  out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space);
+  lap("cuspidality");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -21,6 +21,7 @@
 #include "branch_and_prune.h"
 #include "certificate_sink.h"
 #include "components.h"
+#include "cuspidality.h"
 #include "hansen_sengupta.h"
 #include "link.h"
 #include "model.h"
@@ -70,6 +71,7 @@ struct AspectsResult {
   std::vector<int32_t> csnc;            // box -> CSNC (decreasing size), -1 for undecided
   std::vector<int64_t> csnc_sizes;
   int filtered = 0;
+  CuspidalWitnesses cuspidal;           // "one pose, two commands" witnesses per CSNC
   SeparationResult separation;
   SearchDiagnostics diagnostics;
   long solutions = 0, undecided = 0, discarded = 0, processed = 0;

@@ -151,7 +151,13 @@ double parse_real(std::string_view s, long rec) {
 
 const std::vector<std::string_view>& LineReader::expect(const std::vector<const char*>& words,
                                                        size_t extra) {
-  const std::vector<std::string_view>& f = next();
+  next();
+  return require(words, extra);
+}
+
+const std::vector<std::string_view>& LineReader::require(const std::vector<const char*>& words,
+                                                        size_t extra) {
+  const std::vector<std::string_view>& f = fields_;
   bool ok = f.size() == words.size() + extra;
   for (size_t i = 0; ok && i < words.size(); ++i) ok = f[i] == words[i];
   if (!ok) {

@@ -37,6 +37,9 @@ class LineReader {
   // next(), then requires the leading fields == words and `extra` further fields.
   const std::vector<std::string_view>& expect(const std::vector<const char*>& words,
                                               size_t extra);
+  // The same test on the record read last.
+  const std::vector<std::string_view>& require(const std::vector<const char*>& words,
+                                               size_t extra);
   // Reads exactly `n` raw bytes (the embedded model text) and counts its lines.
   std::string raw(size_t n);
   void expect_eof();           // nothing may follow the last record
@@ -64,6 +67,7 @@ struct Verdict {
   std::string verdict, reason, cert_sha, model_sha, robot;
   long record = 0;  // the record a rejection concerns
   long solutions = 0, undecided = 0, links = 0, csncs = 0;
+  long cuspidal = 0, cuspidal_csncs = 0;  // verified W records; CSNCs with one
   long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user
   bool user_factors = false;
 };

@@ -11,11 +11,13 @@
 #include <cstdlib>
 #include <cstdio>
 #include <memory>
+#include <tuple>
 #include <new>
 
 #include "cert_reader.h"
 #include "graph.h"
 #include "proofs.h"
+#include "witness.h"
 
 using namespace cc;
 
@@ -96,6 +98,10 @@ struct Checker {
   long solutions = 0;
   long undecided = 0;
   long links = 0;
+  std::vector<int32_t> csnc_of;
+  size_t csncs_count = 0;  // CSNC of each output box (-1: none), from the csnc records
+  long cuspidal = 0;
+  long cuspidal_csncs = 0;
   int work_base = 29;
 
   explicit Checker(FILE* f) : rd(f) {}
@@ -190,6 +196,7 @@ struct Checker {
   std::pair<long, long> link(const Fields& f, std::pair<long, long> prev);
   Box inner_intersection(long a, long b, std::string_view shift);
   std::vector<int64_t> csnc_section(UnionFind& uf);
+  void cuspidal_section(const Fields& head);
   void run(const CheckOptions& o, Verdict& out);
 };
 
@@ -610,7 +617,7 @@ std::vector<int64_t> Checker::csnc_section(UnionFind& uf) {
   const int64_t comps = I(rd.expect({"csncs"}, 1)[1]);
   if (comps < 0) malformed(rec(), "negative count");
   std::vector<int64_t> sizes;
-  std::vector<uint8_t> used(R.size(), 0);
+  csnc_of.assign(R.size(), -1);
   for (int64_t k = 0; k < comps; ++k) {
     const Fields& f = rd.next();
     if (f[0] != "csnc" || f.size() < 3) malformed(rec(), "expected a csnc record");
@@ -626,8 +633,8 @@ std::vector<int64_t> Checker::csnc_section(UnionFind& uf) {
       const long id = index(f[3 + i], long(R.size()));
       if (id <= prev) reject("component ids not increasing");
       if (!R.solution[id]) reject("component holds a box that is not a solution box");
-      if (used[id]) reject("box " + std::to_string(id) + " is in two components");
-      used[id] = 1;
+      if (csnc_of[id] >= 0) reject("box " + std::to_string(id) + " is in two components");
+      csnc_of[id] = int32_t(k);
       prev = id;
       if (i == 0) first = id;
       if (uf.find(int(id)) != uf.find(int(first)))
@@ -635,6 +642,39 @@ std::vector<int64_t> Checker::csnc_section(UnionFind& uf) {
     }
   }
   return sizes;
+}
+
+// The optional cuspidal section (FORMAT.md, "Cuspidality witnesses"): each W record names
+// two solution boxes of one CSNC whose poses overlap and whose commands are disjoint.
+void Checker::cuspidal_section(const Fields& head) {
+  if (head.size() != 2) malformed(rec(), "expected 'cuspidal COUNT'");
+  const int64_t total = I(head[1]);
+  if (total < 0) malformed(rec(), "negative count");
+  const WitnessVars vars{m.pose, m.command, periodic, ev->two_pi};
+  long prev_c = -1;
+  long prev_a = -1;
+  long prev_b = -1;
+  for (int64_t w = 0; w < total; ++w) {
+    const Fields& f = rd.next();
+    if (f[0] != "W")
+      malformed(rec(), "expected a W record (" + std::to_string(total) + " witnesses announced)");
+    count(f, 5);
+    const long c = index(f[1], long(csncs_count));
+    const long a = index(f[2], long(R.size()));
+    const long b = index(f[3], long(R.size()));
+    const std::string_view sh = f[4];
+    if (sh.size() != size_t(nv) || sh.find_first_not_of("-0+") != std::string::npos)
+      malformed(rec(), "bad SHIFT field");
+    if (std::make_tuple(c, a, b) <= std::make_tuple(prev_c, prev_a, prev_b))
+      reject("witnesses not sorted by (CSNC, A, B) or repeated");
+    const WitnessCheck r = check_pose_witness(R, csnc_of, c, a, b, sh, vars);
+    if (r != WitnessCheck::Verified) reject(witness_message(r));
+    cuspidal_csncs += c != prev_c;
+    prev_c = c;
+    prev_a = a;
+    prev_b = b;
+    ++cuspidal;
+  }
 }
 
 void Checker::run(const CheckOptions& o, Verdict& out) {
@@ -647,7 +687,12 @@ void Checker::run(const CheckOptions& o, Verdict& out) {
   uf.reset(R.size());
   link_section(uf);
   const std::vector<int64_t> sizes = csnc_section(uf);
-  if (I(rd.expect({"claim", "filtered"}, 1)[2]) != filtered_count(sizes))
+  csncs_count = sizes.size();
+  if (rd.next()[0] == "cuspidal") {
+    cuspidal_section(rd.require({"cuspidal"}, 1));
+    rd.next();
+  }
+  if (I(rd.require({"claim", "filtered"}, 1)[2]) != filtered_count(sizes))
     reject("claim filtered does not match the filtering rule");
   const int64_t claim = I(rd.expect({"claim", "lower-bound"}, 1)[2]);
   const long claim_rec = rec();
@@ -708,6 +753,8 @@ void Checker::run(const CheckOptions& o, Verdict& out) {
   out.undecided = undecided;
   out.links = links;
   out.csncs = long(sizes.size());
+  out.cuspidal = cuspidal;
+  out.cuspidal_csncs = cuspidal_csncs;
   out.claimed = claim;
   out.recomputed = bound;
   out.checked = checked;
@@ -776,6 +823,8 @@ std::vector<Count> counts(const Verdict& v) {
           {"undecided", v.undecided, true},
           {"links", v.links, true},
           {"csncs", v.csncs, true},
+          {"cuspidal", v.cuspidal, true},
+          {"cuspidal_csncs", v.cuspidal_csncs, true},
           {"lower_bound", v.claimed, true},
           {"recomputed_lower_bound", v.recomputed, false},
           {"checked_lower_bound", v.checked, true}};

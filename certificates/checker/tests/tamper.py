@@ -509,6 +509,7 @@ def main():
     if len(sys.argv) > 5:  # after the mutations: json_rejected reads one of their files
         failed += verdict_cases(check, sys.argv[4], sys.argv[5], work)
         failed += solved_cases(check, sys.argv[4], work)
+        failed += witness_cases(check, sys.argv[4], work)
     failed += work_limit_cases(check, work)
     return 1 if failed else 0
 
@@ -598,6 +599,102 @@ def solved_cases(check, aspects, work):
                                                              want, word, msg[:110]))
         failed += not ok
     return failed
+
+
+# One aspect covers every pose twice (q = x/2 and q = x/2 + pi on the torus): a toy robot
+# with "one pose, two commands" witnesses (FORMAT.md, "Cuspidality witnesses").
+DOUBLE_COVER = ("robot DOUBLE_COVER\npose    x in [-pi, pi] periodic\n"
+                "command q in [-pi, pi] periodic\nequation sin(q + q - x) = 0\n")
+
+
+def set_witnesses(c, records):
+    """Replaces the cuspidal section by `records` (W lines)."""
+    i = c.find("cuspidal")[0]
+    j = c.find("claim")[0]
+    c.lines[i:j] = ["cuspidal %d" % len(records)] + records
+    return c.fix_end().text()
+
+
+def components(c):
+    return [list(map(int, c.fields(j)[3:])) for j in c.find("csnc")]
+
+
+def witness_other_csnc(c):
+    comps = components(c)
+    a, b = sorted((comps[0][0], comps[1][0]))
+    return set_witnesses(c, ["W 0 %d %d 00" % (a, b)])
+
+
+def witness_commands_overlap(c):
+    """A certified link: poses and commands meet, both boxes in one CSNC."""
+    f = c.fields(c.find("K")[0])
+    a, b = int(f[1]), int(f[2])
+    k = next(k for k, ids in enumerate(components(c)) if a in ids)
+    return set_witnesses(c, ["W %d %d %d %s" % (k, a, b, f[3])])
+
+
+def witness_poses_disjoint(c):
+    """A genuine witness with box B moved a period away on the pose x."""
+    f = c.fields(c.find("W")[0])
+    f[4] = {"0": "+", "-": "0", "+": "0"}[f[4][0]] + f[4][1:]
+    return set_witnesses(c, [" ".join(f)])
+
+
+def witness_cases(check, aspects, work):
+    """The cuspidal section: PRRP has no witness; the toy DOUBLE_COVER has genuine ones,
+    and forged witnesses are rejected with the reason."""
+    out = os.path.join(work, "double_cover")
+    with open(out + ".robot", "w") as f:
+        f.write(DOUBLE_COVER)
+    subprocess.run([aspects, "solve", out + ".robot", "--eps", "0.3", "--out", out, "--quiet"],
+                   check=True)
+    dc = open(os.path.join(out, "aspects.cert")).read()
+    prrp = open(os.path.join(work, "prrp", "aspects.cert")).read()
+    first_w = lambda c: c.fields(c.find("W")[0])
+    cases = [
+        ("prrp_has_no_witness", prrp, lambda c: c.text(), (0, " cuspidal=0 ")),
+        # Every W record verified, at least one (207 when written).
+        ("double_cover_verified", dc, lambda c: c.text(), (0, " cuspidal=")),
+        ("double_cover_has_witnesses", dc, lambda c: c.text(), (0, "cuspidal_csncs=2")),
+        ("witness_other_csnc", dc, witness_other_csnc, (1, "not both in the named CSNC")),
+        ("witness_commands_overlap", dc, witness_commands_overlap,
+         (1, "witness commands are not disjoint")),
+        ("witness_poses_disjoint", dc, witness_poses_disjoint,
+         (1, "witness poses do not overlap")),
+        ("witness_undecided_box", prrp,
+         lambda c: set_witnesses(c, ["W 0 %s %s 00" % tuple(sorted(
+             (int(components(c)[0][0]), int(c.fields(c.find("U")[0])[1]))))]),
+         (1, "not both solution boxes")),
+        ("witness_shift_on_command", dc,
+         lambda c: set_witnesses(c, [" ".join(first_w(c)[:4] + [first_w(c)[4][0] + "+"])]),
+         (1, "shift on a command")),
+        ("witness_unsorted", dc,
+         lambda c: set_witnesses(c, [c.lines[c.find("W")[1]], c.lines[c.find("W")[0]]]),
+         (1, "not sorted")),
+        ("witness_bad_shift", dc,
+         lambda c: set_witnesses(c, [" ".join(first_w(c)[:4] + ["0x"])]),
+         (2, "bad SHIFT field")),
+        ("witness_count_too_large", dc,
+         lambda c: edit(c, c.find("cuspidal")[0], "cuspidal 999"),
+         (2, "expected a W record")),
+    ]
+    failed = 0
+    for name, base, fn, (want, word) in cases:
+        path = os.path.join(work, "witness__%s.cert" % name)
+        with open(path, "w") as f:
+            f.write(fn(Cert(base)))
+        code, msg = run(check, path)
+        ok = code == want and word in msg
+        print("%s witness/%-47s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
+                                                              code, want, word, msg[:110]))
+        failed += not ok
+    r = subprocess.run([check, "--quiet", "--json", os.path.join(out, "aspects.cert")],
+                       stdout=subprocess.PIPE)
+    v = json.loads(r.stdout) if r.returncode == 0 else {}
+    ok = v.get("cuspidal", 0) > 0 and v.get("cuspidal_csncs") == 2
+    print("%s witness/%-47s exit %d: %s" % ("ok  " if ok else "FAIL", "json_cuspidal",
+                                            r.returncode, r.stdout.decode()[-80:].strip()))
+    return failed + (not ok)
 
 
 def work_bomb(terms=200):

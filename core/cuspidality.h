@@ -1,0 +1,56 @@
+// Certified cuspidality (paper Section 3.2), "one pose, two commands": two solution boxes
+// A < B of the same CSNC whose pose parts overlap (B shifted by 2πk on periodic pose
+// variables) and whose command parts are disjoint (modulo 2π on periodic commands). P1 on
+// both boxes then gives, for every pose of the overlap, two distinct commands in one CSNC,
+// hence in one aspect. The tests are exactly those of check_cert (certificates/FORMAT.md,
+// "Cuspidality witnesses"): shifted ends rounded inward for the overlap, outward for the
+// disjointness. Found by a sort-and-sweep on one pose coordinate within each CSNC.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "box_store.h"
+#include "interval.h"
+
+namespace aspects {
+
+struct PoseWitness {
+  int32_t csnc, a, b;       // a < b, solution boxes of CSNC `csnc`
+  uint32_t shift_code = 0;  // pack_shift over all variables (0 on commands): b + 2πk meets a
+  int shift(int v) const { return int((shift_code >> (2 * v)) & 3u) - 1; }
+};
+
+// Whether the search of a CSNC listed every witness or stopped at the cap.
+enum class WitnessSearch : uint8_t { Complete = 0, Capped = 1 };
+const char* witness_search_name(WitnessSearch s);
+
+struct CuspidalWitnesses {
+  std::vector<PoseWitness> pose;      // sorted by (csnc, a, b), each pair once
+  std::vector<int64_t> count;         // per CSNC: witnesses in `pose`
+  std::vector<WitnessSearch> search;  // per CSNC
+};
+
+// The variables of a model, and 2π at the working precision (made by the constructor).
+struct WitnessSpace {
+  std::vector<int> pose;  // indices into the variables
+  std::vector<int> command;
+  std::vector<bool> periodic;
+  Interval two_pi;
+  WitnessSpace(std::vector<int> pose, std::vector<int> command, std::vector<bool> periodic);
+};
+
+// Box b + 2πk meets box a on every pose variable, the shifted ends of b rounded inward (k
+// = 0 on non-periodic variables): a nonempty inner intersection.
+bool poses_overlap(const BoxStore& R, int a, int b, const std::vector<int>& k,
+                   const WitnessSpace& s);
+// For every command, [a] and [b] + 2πm are disjoint for every integer m (m = 0 only when
+// the command is not periodic), proved with the shifted ends rounded outward.
+bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s);
+
+// csnc: CSNC of each box (-1: not a solution box); csncs: number of CSNCs. At most `cap`
+// witnesses per CSNC.
+CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc,
+                                      int csncs, const WitnessSpace& s, int64_t cap = 10000);
+
+}  // namespace aspects
