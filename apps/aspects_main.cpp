@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
       ->default_val(0);
   solve->add_flag("--progress", so.progress, "progress on stderr even when it is not a terminal");
   solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
+  solve->add_flag("--all-links", so.all_links,
+                  "prove every link between neighbouring solution boxes (default: only those "
+                  "that join two components; the same CSNCs)");
   solve->add_flag("--quiet", so.quiet, "print no summary");
   solve->add_option("--bisect", so.bisect,
                     "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose when P2 failed)")

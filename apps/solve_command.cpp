@@ -101,6 +101,7 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
   j["tau"] = o.tau;
   j["threads"] = o.threads;
   j["bisect"] = o.bisect;
+  j["all_links"] = o.all_links;
   j["time_seconds"] = r.seconds;
   for (const auto& [phase, sec] : r.phase_seconds) j["phase_seconds"][phase] = sec;
   j["boxes"] = {{"total", r.boxes.size()},
@@ -162,6 +163,7 @@ int run_solve(const SolveOptions& opts) {
   cfg.eps = o.eps;
   cfg.tau = o.tau;
   cfg.keep_link_proofs = !o.no_cert;
+  cfg.all_links = o.all_links;
   cfg.threads = o.threads;
   parse_bisector_kind(o.bisect, cfg.bisector);  // CLI11 already checked the name
   const bool tty = isatty(STDERR_FILENO);

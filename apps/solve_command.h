@@ -15,6 +15,7 @@ struct SolveOptions {
   int threads = 0;  // 0: one per core
   bool progress = false;
   bool no_cert = false;
+  bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
   bool quiet = false;
   std::string bisect = "round-robin";
 };

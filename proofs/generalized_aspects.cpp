@@ -10,12 +10,14 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <unordered_map>
 
 #include "checker_margins.h"
 #include "constraints.h"
 #include "contractor.h"
 #include "determinant_factors.h"
 #include "model_eval.h"
+#include "union_find.h"
 
 namespace aspects {
 
@@ -295,31 +297,56 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
 
   lap("neighbourhood graph");
   // 4.3.2: certified links between solution boxes (P3), in blocks processed in
-  // parallel and concatenated in order.
+  // parallel and concatenated in order. Unless all links are asked for, a link is proved
+  // only when it joins two components: rounds of blocks read the components known at the
+  // round's start (and their own links), then join theirs in order, so that the links
+  // proved do not depend on the number of threads.
   const size_t block = 4096, blocks = (out.neighbors.size() + block - 1) / block;
+  const size_t round = config.all_links ? blocks : 8;
   std::vector<std::vector<int32_t>> block_links(blocks);
   std::vector<LinkRecords> block_proofs(blocks, LinkRecords(model.n()));
-  arena.execute([&] {
-    tbb::parallel_for(size_t(0), blocks, [&](size_t k) {
-      set_working_precision(prec);
-      ModelEvaluator ev(model);
-      HsWorkspace ws;
-      LinkProof lp;
-      size_t end = std::min(out.neighbors.size(), (k + 1) * block);
-      for (size_t e = k * block; e < end; ++e) {
-        const auto& pr = out.neighbors[e];
-        if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
-        if (!certify_link(ev, out.boxes, pr, config.tau, lp, ws)) continue;
-        block_links[k].push_back(int32_t(e));
-        if (config.keep_link_proofs) block_proofs[k].push(lp);
-      }
+  UnionFind joined(config.all_links ? 0 : size_t(out.boxes.size()));
+  for (size_t first = 0; first < blocks; first += round) {
+    size_t last = std::min(blocks, first + round);
+    arena.execute([&] {
+      tbb::parallel_for(first, last, [&](size_t k) {
+        set_working_precision(prec);
+        ModelEvaluator ev(model);
+        HsWorkspace ws;
+        LinkProof lp;
+        std::unordered_map<int32_t, int32_t> local;  // joins made by this block so far
+        auto local_root = [&](int32_t x) {
+          for (auto it = local.find(x); it != local.end(); it = local.find(x)) x = it->second;
+          return x;
+        };
+        size_t end = std::min(out.neighbors.size(), (k + 1) * block);
+        for (size_t e = k * block; e < end; ++e) {
+          const auto& pr = out.neighbors[e];
+          if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
+          int32_t ra = 0, rb = 0;
+          if (!config.all_links) {
+            ra = local_root(joined.root(pr.a));
+            rb = local_root(joined.root(pr.b));
+            if (ra == rb) continue;
+          }
+          if (!certify_link(ev, out.boxes, pr, config.tau, lp, ws)) continue;
+          if (!config.all_links) local[ra] = rb;
+          block_links[k].push_back(int32_t(e));
+          if (config.keep_link_proofs) block_proofs[k].push(lp);
+        }
+      });
     });
-  });
-  for (size_t k = 0; k < blocks; ++k) {
-    out.certified_links.insert(out.certified_links.end(), block_links[k].begin(),
-                               block_links[k].end());
-    out.link_proofs.append(block_proofs[k]);
-    block_proofs[k] = LinkRecords();
+    // In order; a link joining what another block of the round already joined is dropped.
+    for (size_t k = first; k < last; ++k) {
+      for (size_t i = 0; i < block_links[k].size(); ++i) {
+        const NeighborPair& pr = out.neighbors[block_links[k][i]];
+        if (!config.all_links && !joined.unite(pr.a, pr.b)) continue;
+        out.certified_links.push_back(block_links[k][i]);
+        if (config.keep_link_proofs) out.link_proofs.append_one(block_proofs[k], i);
+      }
+      block_proofs[k] = LinkRecords();
+      block_links[k] = {};
+    }
   }
 
   lap("certified links");

@@ -37,6 +37,9 @@ struct AspectsConfig {
   double tau = 1.01;
   int max_newton_iterations = 8;
   bool keep_link_proofs = true;       // P3 data, for the certificate
+  // Prove every link between neighbouring solution boxes, or only those that join two
+  // components not yet joined (a spanning forest: the same CSNCs, far fewer proofs).
+  bool all_links = false;
   int threads = 1;
   BisectorKind bisector = BisectorKind::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel

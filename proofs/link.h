@@ -35,6 +35,9 @@ class LinkRecords {
   explicit LinkRecords(int n = 0) : n_(n) {}
   void push(const LinkProof& p);
   void append(const LinkRecords& o) { data_.insert(data_.end(), o.data_.begin(), o.data_.end()); }
+  void append_one(const LinkRecords& o, size_t i) {
+    data_.insert(data_.end(), o.data_.begin() + i * stride(), o.data_.begin() + (i + 1) * stride());
+  }
   size_t size() const { return n_ ? data_.size() / stride() : 0; }
   const double* witness(size_t i) const { return &data_[i * stride()]; }
   double inflated_lo(size_t i, int j) const { return data_[i * stride() + n_ + 2 * j]; }

@@ -117,3 +117,31 @@ TEST(GeneralizedAspects, ParallelSubtreesGiveTheSequentialResult) {
     EXPECT_EQ(a.csnc_sizes, b.csnc_sizes);
   }
 }
+
+TEST(GeneralizedAspects, SpanningLinksGiveTheSameCsncsAsAllLinks) {
+  // The default proves only links that join two components: a spanning forest of each
+  // CSNC, so exactly |S| − #CSNCs links, the same components box for box, and the same
+  // links for any number of threads. (Broken by proving a link whose ends are already
+  // joined: the count exceeds |S| − #CSNCs.)
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  AspectsConfig all;
+  all.eps = 0.5;
+  all.all_links = true;
+  AspectsResult a = compute_aspects(m, all);
+  for (int threads : {1, 2}) {
+    AspectsConfig cfg;
+    cfg.eps = 0.5;
+    cfg.threads = threads;
+    AspectsResult s = compute_aspects(m, cfg);
+    EXPECT_EQ(s.csnc, a.csnc);
+    EXPECT_EQ(s.csnc_sizes, a.csnc_sizes);
+    EXPECT_EQ(s.separation.lower_bound, a.separation.lower_bound);
+    EXPECT_EQ(long(s.certified_links.size()), s.solutions - long(s.csnc_sizes.size()));
+    EXPECT_LT(s.certified_links.size(), a.certified_links.size());
+    if (threads == 1) continue;
+    AspectsConfig one = cfg;
+    one.threads = 1;
+    EXPECT_EQ(compute_aspects(m, one).certified_links, s.certified_links);
+  }
+}
