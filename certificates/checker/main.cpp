@@ -285,9 +285,13 @@ void Checker::read_bounds(long model_rec) {
 
 // tau and eps (range only: informational) and the root cell.
 void Checker::read_domain() {
-  const double tau = parse_real(rd.expect({"tau"}, 1)[1], rec());
+  // One call per statement: the order in which a call's arguments are evaluated is
+  // unspecified, and rec() must be read after expect() has moved to the record.
+  const Fields& tau_record = rd.expect({"tau"}, 1);
+  const double tau = parse_real(tau_record[1], rec());
   if (!(tau >= 1)) malformed(rec(), "tau must be >= 1");
-  const double eps = parse_real(rd.expect({"eps"}, 1)[1], rec());
+  const Fields& eps_record = rd.expect({"eps"}, 1);
+  const double eps = parse_real(eps_record[1], rec());
   if (!(eps > 0)) malformed(rec(), "eps must be > 0");
   const Fields& domain = rd.expect({"domain"}, 2 * size_t(nv));
   root = RealCursor(domain, 1, rec()).intervals(nv);
@@ -697,7 +701,8 @@ void Checker::run(const CheckOptions& o, Verdict& out) {
   const int64_t claim = I(rd.expect({"claim", "lower-bound"}, 1)[2]);
   const long claim_rec = rec();
   if (claim < 0) malformed(rec(), "negative lower bound");
-  if (I(rd.expect({"end"}, 1)[1]) != rec() - 1) malformed(rec(), "end: wrong record count");
+  const int64_t records = I(rd.expect({"end"}, 1)[1]);
+  if (records != rec() - 1) malformed(rec(), "end: wrong record count");
   rd.expect_eof();
   // M may hold 2^22 + 64 per box pairs: a real subdivision has a few neighbours per box,
   // while S records that share one IMAGE over many cells make M quadratic (10^5 boxes:

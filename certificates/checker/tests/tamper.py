@@ -286,6 +286,18 @@ def domain_edit(c, name, how):
     return c.rehash().text()
 
 
+def record_number_mutations(base_text):
+    """A bad real on the tau and eps records is reported with that record's number (the
+    checker once read the number before moving to the record: unspecified evaluation order)."""
+    out = []
+    for word in ("tau", "eps"):
+        n = Cert(base_text).find(word)[0]
+        out.append(("%s_bad_real_names_its_record" % word,
+                    lambda c, n=n, word=word: edit(c, n, word + " 1.0"),
+                    (2, "record %d: bad real" % (n + 1))))
+    return out
+
+
 def domain_mutations(base_text):
     """Every variable's domain narrowed, widened and shifted: always rejected. A periodic
     domain narrowed or widened is no longer one period: the embedded model is malformed (2)."""
@@ -471,7 +483,9 @@ def main():
             subprocess.run([aspects, "solve", os.path.join(robots, robot + ".robot"), "--eps", eps,
                             "--out", os.path.join(work, robot), "--quiet"], check=True)
             path = os.path.join(work, robot, "aspects.cert")
-            bases.append((robot, path, muts + domain_mutations(open(path).read())))
+            text = open(path).read()
+            bases.append((robot, path, muts + domain_mutations(text) +
+                          record_number_mutations(text)))
     else:
         bases.append(("circle", os.path.join(tests, "valid", "circle.cert"), mutations_real(None)))
     cases = []
