@@ -3,6 +3,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <mutex>
@@ -17,7 +19,6 @@
 #include "contractor.h"
 #include "determinant_factors.h"
 #include "model_eval.h"
-#include "union_find.h"
 
 namespace aspects {
 
@@ -305,7 +306,16 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   const size_t round = config.all_links ? blocks : 8;
   std::vector<std::vector<int32_t>> block_links(blocks);
   std::vector<LinkRecords> block_proofs(blocks, LinkRecords(model.n()));
-  UnionFind joined(config.all_links ? 0 : size_t(out.boxes.size()));
+  // The components joined so far (Boost's disjoint sets over the boxes), changed only
+  // between rounds; during a round the blocks read `parent` without path compression.
+  const int joinable = config.all_links ? 0 : out.boxes.size();
+  std::vector<int> rank(joinable), parent(joinable);
+  boost::disjoint_sets<int*, int*> joined(rank.data(), parent.data());
+  for (int b = 0; b < joinable; ++b) joined.make_set(b);
+  auto joined_root = [&](int32_t x) {
+    while (parent[x] != x) x = parent[x];
+    return x;
+  };
   for (size_t first = 0; first < blocks; first += round) {
     size_t last = std::min(blocks, first + round);
     arena.execute([&] {
@@ -325,8 +335,8 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
           if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
           int32_t ra = 0, rb = 0;
           if (!config.all_links) {
-            ra = local_root(joined.root(pr.a));
-            rb = local_root(joined.root(pr.b));
+            ra = local_root(joined_root(pr.a));
+            rb = local_root(joined_root(pr.b));
             if (ra == rb) continue;
           }
           if (!certify_link(ev, out.boxes, pr, config.tau, lp, ws)) continue;
@@ -340,7 +350,11 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     for (size_t k = first; k < last; ++k) {
       for (size_t i = 0; i < block_links[k].size(); ++i) {
         const NeighborPair& pr = out.neighbors[block_links[k][i]];
-        if (!config.all_links && !joined.unite(pr.a, pr.b)) continue;
+        if (!config.all_links) {
+          int ra = joined.find_set(pr.a), rb = joined.find_set(pr.b);
+          if (ra == rb) continue;
+          joined.link(ra, rb);
+        }
         out.certified_links.push_back(block_links[k][i]);
         if (config.keep_link_proofs) out.link_proofs.append_one(block_proofs[k], i);
       }
