@@ -45,6 +45,12 @@ int main(int argc, char** argv) {
                     "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose when P2 failed)")
       ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}))
       ->default_val("round-robin");
+  solve->add_option("--time-limit", so.time_limit,
+                    "stop the search after SECONDS and write a partial result (exit 3)");
+  solve->add_option("--max-boxes", so.max_boxes,
+                    "stop the search after N processed boxes and write a partial result (exit 3)");
+  solve->add_option("--memory-limit", so.memory_limit,
+                    "stop the search before the process needs more than GiB of memory (exit 3)");
 
   QueryOptions qo;
   auto* query =

@@ -292,7 +292,7 @@ ResultIndex decode_result_index(const std::string& bytes, const std::string& wha
   for (auto& u : idx.undecided) {
     u.id = r.u32();
     u.kind = r.u8();
-    if (u.kind > 2) r.fail("bad undecided kind");
+    if (u.kind > 3) r.fail("bad undecided kind");
     u.lo.resize(idx.n);
     u.hi.resize(idx.n);
     for (uint32_t j = 0; j < idx.n; ++j) {

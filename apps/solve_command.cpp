@@ -19,17 +19,19 @@
 #include "generalized_aspects.h"
 #include "model.h"
 #include "result_index.h"
+#include "stop_condition.h"
 
 namespace aspects {
 
 namespace {
 
-double resident_mib() {
-  std::ifstream in("/proc/self/statm");
-  long pages = 0, rss = 0;
-  in >> pages >> rss;
-  return double(rss) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
+double resident_mib() { return resident_bytes() / (1024.0 * 1024.0); }
+
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+// Memory still needed per output box after the search stops, for the neighbourhood graph,
+// the links, the merge and the outputs: measured peak minus resident memory at the end of
+// the search, per output box, on RRRRR and 3-RPR (see tests/long_runs.sh), with a margin.
+constexpr double kReservePerBox = 2048;
 
 void validate(const SolveOptions& o) {
   if (!(o.eps > 0) || !std::isfinite(o.eps))
@@ -40,6 +42,15 @@ void validate(const SolveOptions& o) {
     throw UsageError("--prec must be between 24 and 4096 bits (got " + std::to_string(o.prec) + ")");
   if (o.threads < 0 || o.threads > 1024)
     throw UsageError("--threads must be between 0 (one per core) and 1024");
+  // Sentinels are -1 (the defaults); a value the user gave must make sense.
+  if (o.time_limit != -1 && !(o.time_limit > 0 && o.time_limit < 1e9))
+    throw UsageError("--time-limit must be a positive number of seconds (got " +
+                     std::to_string(o.time_limit) + ")");
+  if (o.max_boxes != -1 && o.max_boxes < 1)
+    throw UsageError("--max-boxes must be at least 1 (got " + std::to_string(o.max_boxes) + ")");
+  if (o.memory_limit != -1 && !(o.memory_limit > 0 && o.memory_limit < 1e6))
+    throw UsageError("--memory-limit must be a positive number of GiB (got " +
+                     std::to_string(o.memory_limit) + ")");
 }
 
 std::string fmt_double(double x) {
@@ -55,14 +66,15 @@ void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& 
   os << ",boundary\n";
   for (int b = 0; b < r.boxes.size(); ++b) {
     int c = r.csnc[b];
-    os << b << ',' << (r.certified[b] ? "solution" : "undecided") << ',' << c << ','
-       << (c >= 0 && c < r.filtered ? 1 : 0);
+    const bool unexplored = r.undecided_kind[b] == UndecidedKind::Unexplored;
+    os << b << ',' << (r.certified[b] ? "solution" : unexplored ? "unexplored" : "undecided")
+       << ',' << c << ',' << (c >= 0 && c < r.filtered ? 1 : 0);
     for (int v = 0; v < r.boxes.nv(); ++v)
       os << ',' << fmt_double(r.boxes.lo(b, v)) << ',' << fmt_double(r.boxes.hi(b, v));
     // Why a box stayed undecided: `constraint` (on the boundary of an additional
     // constraint, the paper's blue boxes) or `singular` (P1 or P2 failed, red and
-    // black); empty for solution boxes.
-    const char* why = r.certified[b] ? ""
+    // black); empty for solution and unexplored boxes.
+    const char* why = r.certified[b] || unexplored ? ""
                       : r.undecided_kind[b] == UndecidedKind::Constraint ? "constraint"
                                                                          : "singular";
     os << ',' << why << '\n';
@@ -103,16 +115,20 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
   j["bisect"] = o.bisect;
   j["all_links"] = o.all_links;
   j["time_seconds"] = r.seconds;
+  // A stopped run is a partial result: its claims hold, its search did not finish.
+  j["complete"] = r.complete();
+  j["stopped_by"] = r.complete() ? nlohmann::json(nullptr) : nlohmann::json(stop_reason_name(r.stopped_by));
   for (const auto& [phase, sec] : r.phase_seconds) j["phase_seconds"][phase] = sec;
   j["boxes"] = {{"total", r.boxes.size()},
                 {"solution", r.solutions},
                 {"undecided", r.undecided},
+                {"unexplored", r.unexplored},
                 {"discarded", r.discarded},
                 {"processed", r.processed}};
   j["links"] = {{"neighbor", r.neighbors.size()}, {"certified", r.certified_links.size()}};
   long singular = 0, boundary = 0;
   for (int b = 0; b < r.boxes.size(); ++b) {
-    if (r.certified[b]) continue;
+    if (r.certified[b] || r.undecided_kind[b] == UndecidedKind::Unexplored) continue;
     singular += r.undecided_kind[b] == UndecidedKind::Singular;
     boundary += r.undecided_kind[b] == UndecidedKind::Constraint;
   }
@@ -166,6 +182,14 @@ int run_solve(const SolveOptions& opts) {
   cfg.all_links = o.all_links;
   cfg.threads = o.threads;
   parse_bisector_kind(o.bisect, cfg.bisector);  // CLI11 already checked the name
+  // Limits and signals: the search stops cleanly and the outputs are a partial result.
+  StopCondition stop;
+  if (o.time_limit > 0) stop.set_time_limit(o.time_limit);
+  if (o.max_boxes > 0) stop.set_max_boxes(o.max_boxes);
+  if (o.memory_limit > 0) stop.set_memory_limit(o.memory_limit * kGiB, kReservePerBox);
+  stop.set_watch_signals(true);
+  watch_stop_signals();
+  cfg.stop = &stop;
   const bool tty = isatty(STDERR_FILENO);
   const bool show = o.progress || tty;
   auto start = std::chrono::steady_clock::now();
@@ -209,13 +233,25 @@ int run_solve(const SolveOptions& opts) {
   if (!o.quiet) {
     std::printf("robot %s  eps %g  precision %ld bits  tau %g\n", model.name.c_str(), o.eps,
                 o.prec, o.tau);
-    std::printf("boxes: %d (%ld solution, %ld undecided)\n", r.boxes.size(), r.solutions,
-                r.undecided);
+    if (r.complete())
+      std::printf("boxes: %d (%ld solution, %ld undecided)\n", r.boxes.size(), r.solutions,
+                  r.undecided);
+    else
+      std::printf("boxes: %d (%ld solution, %ld undecided, %ld unexplored)\n", r.boxes.size(),
+                  r.solutions, r.undecided, r.unexplored);
     std::printf("links: %zu neighbour pairs, %zu certified\n", r.neighbors.size(),
                 r.certified_links.size());
     std::printf("CSNCs: %zu, filtered: %d\n", r.csnc_sizes.size(), r.filtered);
     std::printf("separated lower bound on the number of aspects: %d\n", r.separation.lower_bound);
     std::printf("time: %.3f s\n", r.seconds);
+  }
+  if (!r.complete()) {
+    // On stderr even with --quiet: scripts see exit 3, a user sees why.
+    std::fprintf(stderr,
+                 "aspects: stopped by %s: partial result (%ld boxes unexplored); every claim "
+                 "above holds, the bound counts unexplored boxes like undecided ones\n",
+                 stop_reason_name(r.stopped_by), r.unexplored);
+    return kExitStopped;
   }
   return 0;
 }

@@ -18,7 +18,15 @@ struct SolveOptions {
   bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
   bool quiet = false;
   std::string bisect = "round-robin";
+  // Limits of a long run (issue 12); negative: none. A stopped run writes a partial
+  // result and exits with kExitStopped.
+  double time_limit = -1;    // seconds
+  long max_boxes = -1;       // boxes processed
+  double memory_limit = -1;  // GiB
 };
+
+// Exit status of a run stopped by a limit or a signal (its outputs are a partial result).
+constexpr int kExitStopped = 3;
 
 // A bad option value; reported with exit code 2.
 class UsageError : public std::runtime_error {

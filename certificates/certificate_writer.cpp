@@ -113,7 +113,7 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
       splice(*tasks_.at(std::stol(buf + 1)));
       continue;
     }
-    if ((buf[0] == 'U' || buf[0] == 'S') && buf[1] == ' ') {
+    if ((buf[0] == 'U' || buf[0] == 'S' || buf[0] == 'N') && buf[1] == ' ') {
       const char* rest = std::strchr(buf + 2, ' ');
       put("%c %ld", buf[0], leaves_++);
       std::fputs(rest, f_);  // keeps the newline
@@ -165,6 +165,12 @@ void TreeRecordFile::deferred(int32_t task) { std::fprintf(f_, "@%d\n", task); }
 
 void TreeRecordFile::undecided(int32_t id, const int8_t* s) {
   std::fprintf(f_, "U %d", id);
+  signs(s);
+  std::fputc('\n', f_);
+}
+
+void TreeRecordFile::unexplored(int32_t id, const int8_t* s) {
+  std::fprintf(f_, "N %d", id);
   signs(s);
   std::fputc('\n', f_);
 }

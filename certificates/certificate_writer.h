@@ -28,6 +28,7 @@ class TreeRecordFile : public TreeSink {
   void split(int var, double at) override;
   void discard(const char* hint) override;
   void undecided(int32_t id, const int8_t* signs) override;
+  void unexplored(int32_t id, const int8_t* signs) override;
   void solution(int32_t id, const int8_t* signs, const SolutionProof& proof) override;
   void deferred(int32_t task) override;
   void finished() override { close(); }

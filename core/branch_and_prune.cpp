@@ -4,10 +4,10 @@
 
 namespace aspects {
 
-void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
+bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
                       SearchStats& stats, const std::function<void()>& on_progress,
                       int root_parent_split, int defer_depth,
-                      std::vector<DeferredSubtree>* deferred) {
+                      std::vector<DeferredSubtree>* deferred, StopCondition* stop) {
   struct Item {
     Box box;
     int32_t node;
@@ -18,6 +18,7 @@ void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
   tree.emplace_back();
   std::vector<Item> stack;  // Extract: depth first
   stack.push_back({root, 0, root_parent_split, 0});
+  bool complete = true;
   while (!stack.empty()) {
     Item it = std::move(stack.back());
     stack.pop_back();
@@ -27,6 +28,12 @@ void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
       node.leaf = int32_t(deferred->size());
       steps.deferred(node.leaf);
       deferred->push_back({std::move(it.box), it.parent_split, it.node});
+      continue;
+    }
+    if (stop && !stop->admit(stats.solutions + stats.undecided)) {
+      node.fate = LeafFate::Unexplored;
+      node.leaf = steps.keep_unexplored(it.box);
+      complete = false;
       continue;
     }
     ++stats.processed;
@@ -70,6 +77,7 @@ void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     stack.push_back({std::move(hi), right, var, it.depth + 1});
     stack.push_back({std::move(it.box), left, var, it.depth + 1});
   }
+  return complete;
 }
 
 }  // namespace aspects

@@ -12,11 +12,14 @@
 
 #include "bisector.h"
 #include "interval.h"
+#include "stop_condition.h"
 #include "verdict.h"
 
 namespace aspects {
 
-enum class LeafFate : uint8_t { Solution, Undecided, Discarded, Deferred };
+// Unexplored: the search stopped before this cell (StopCondition); its output box is the
+// cell, which may hold solutions, like an undecided box.
+enum class LeafFate : uint8_t { Solution, Undecided, Discarded, Deferred, Unexplored };
 
 struct SearchNode {
   int32_t left = -1, right = -1;  // children (internal nodes)
@@ -39,6 +42,8 @@ class BranchAndPruneSteps {
   virtual Verdict prove(const Box& box, int32_t& output_index) = 0;
   // Stores an undecided box (a leaf that Prove rejected for `why`); its output index.
   virtual int32_t keep_undecided(const Box& box, Verdict why) = 0;
+  // Stores a cell the search stopped before (neither pruned nor proved); its output index.
+  virtual int32_t keep_unexplored(const Box& box) = 0;
   // Branch: the variable and the point to bisect at, or var = -1 for a leaf.
   virtual SplitChoice choose_split(const Box& box, const SplitContext& ctx) = 0;
   // Told where a box was bisected, and where a subtree was deferred (for the
@@ -63,9 +68,13 @@ struct DeferredSubtree {
 // nodes at that depth are not processed but appended to *deferred (in depth-first order)
 // and marked LeafFate::Deferred; each can then be searched on its own, with the same
 // result as if the search had continued: the steps keep no state between boxes.
-void branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
+// With `stop`, the search asks it before each box; once it says stop, that box and every
+// one still on the stack become Unexplored leaves (output boxes, in depth-first order).
+// Returns false when some leaf was left unexplored.
+bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
                       SearchStats& stats, const std::function<void()>& on_progress = {},
                       int root_parent_split = -1, int defer_depth = -1,
-                      std::vector<DeferredSubtree>* deferred = nullptr);
+                      std::vector<DeferredSubtree>* deferred = nullptr,
+                      StopCondition* stop = nullptr);
 
 }  // namespace aspects

@@ -22,6 +22,7 @@ class TreeSink {
   virtual void split(int var, double at) = 0;
   virtual void discard(const char* hint) = 0;
   virtual void undecided(int32_t local_id, const int8_t* signs) = 0;
+  virtual void unexplored(int32_t local_id, const int8_t* signs) = 0;
   virtual void solution(int32_t local_id, const int8_t* signs, const SolutionProof& proof) = 0;
   // The subtree `task` goes here (its records come from subtree(task)).
   virtual void deferred(int32_t task) = 0;

@@ -110,6 +110,13 @@ class AspectsSearch : public BranchAndPruneSteps {
     return index;
   }
 
+  int32_t keep_unexplored(const Box& cell) override {
+    int32_t index = store(cell, false);
+    out_.undecided_kind[index] = UndecidedKind::Unexplored;
+    if (sink_) sink_->unexplored(index, last_signs());
+    return index;
+  }
+
   SplitChoice choose_split(const Box& box, const SplitContext& ctx) override {
     return bisector_->choose(box, ctx);
   }
@@ -257,7 +264,8 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   std::vector<DeferredSubtree> deferred;
   {
     AspectsSearch search(model, config, top.out, cert ? cert->top() : nullptr);
-    branch_and_prune(root, search, top.tree, stats, tick, -1, config.defer_depth, &deferred);
+    branch_and_prune(root, search, top.tree, stats, tick, -1, config.defer_depth, &deferred,
+                     config.stop);
   }
   std::vector<SearchPart> parts(deferred.size());
   std::vector<TreeSink*> sinks(deferred.size(), nullptr);
@@ -271,7 +279,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
       set_working_precision(prec);  // MPFR's default precision is per thread
       AspectsSearch search(model, config, parts[k].out, sinks[k]);
       branch_and_prune(deferred[k].box, search, parts[k].tree, stats, tick,
-                       deferred[k].parent_split);
+                       deferred[k].parent_split, -1, nullptr, config.stop);
       if (sinks[k]) sinks[k]->finished();
       deferred[k].box.clear();
     }, tbb::simple_partitioner());
@@ -290,6 +298,9 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   out.solutions = stats.solutions;
   out.undecided = stats.undecided;
   out.discarded = stats.discarded;
+  for (int b = 0; b < out.boxes.size(); ++b)
+    out.unexplored += out.undecided_kind[b] == UndecidedKind::Unexplored;
+  if (out.unexplored > 0) out.stopped_by = config.stop->reason();
 
   // 4.3.1: neighbourhood graph over R = S ∪ U.
   std::vector<bool> periodic;

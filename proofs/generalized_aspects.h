@@ -44,6 +44,9 @@ struct AspectsConfig {
   BisectorKind bisector = BisectorKind::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
+  // Limits and signals (core/stop_condition.h): when it says stop, the cells not yet
+  // searched are kept as unexplored output boxes and the rest of the method runs as usual.
+  StopCondition* stop = nullptr;
   std::function<void(const SearchStats&)> progress;
 };
 
@@ -51,6 +54,7 @@ enum class UndecidedKind : uint8_t {
   NoExistence = 0,  // P1 not proved (red in the paper's figures)
   Singular = 1,     // P1 proved, P2 not (black)
   Constraint = 2,   // on the boundary of an additional constraint (blue, paper 5.4)
+  Unexplored = 3,   // the search stopped before this cell: not a verdict at all
 };
 
 // Why the search decided what it did: for tuning and for the user, not for any claim.
@@ -78,6 +82,12 @@ struct AspectsResult {
   SeparationResult separation;
   SearchDiagnostics diagnostics;
   long solutions = 0, undecided = 0, discarded = 0, processed = 0;
+  // A stopped search: `unexplored` output boxes are cells never searched (certified 0,
+  // undecided_kind Unexplored); every claim above still holds, the bound counting them
+  // like undecided boxes.
+  long unexplored = 0;
+  StopReason stopped_by = StopReason::None;
+  bool complete() const { return stopped_by == StopReason::None; }
   double seconds = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;  // wall time per phase
 };

@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,12 @@ class AnnulusSteps : public BranchAndPruneSteps {
     leaves.push_back(box);
     return int32_t(leaves.size() - 1);
   }
+  int32_t keep_unexplored(const Box& box) override {
+    unexplored.push_back(int32_t(leaves.size()));
+    leaves.push_back(box);
+    return int32_t(leaves.size() - 1);
+  }
+  std::vector<int32_t> unexplored;  // output indices of the unexplored cells
   SplitChoice choose_split(const Box& box, const SplitContext&) override {
     int var = box[0].width_up() >= box[1].width_up() ? 0 : 1;
     double lo = box[var].lo_down(), hi = box[var].hi_up();
@@ -312,5 +319,102 @@ TEST(BranchAndPrune, MergedTreePartitionsTheRootForAnyThreadsAndDepth) {
         EXPECT_EQ(int(r.tree[i].fate), int(first[i].fate)) << i;
         EXPECT_EQ(r.tree[i].leaf, first[i].leaf) << i;
       }
+    }
+}
+
+// A stopped search (issue 12): stopped after N boxes, exactly N are processed, the cells
+// it never searched are Unexplored leaves with output boxes, and the leaves' cells still
+// partition the root; the explored part is the full search's preorder prefix.
+//
+// Seen failing: the loop left at the first unexplored cell (`break` for `continue`): the
+// cells still on the stack stay Discarded leaves that nothing refuted, both tests fail.
+TEST(BranchAndPrune, StoppedSearchKeepsTheUnexploredCells) {
+  set_working_precision(53);
+  AnnulusSteps full;
+  std::vector<SearchNode> full_tree;
+  SearchStats full_stats;
+  EXPECT_TRUE(branch_and_prune(root_box(), full, full_tree, full_stats));
+  for (long n : {1L, 2L, 7L, 50L, 333L}) {
+    AnnulusSteps steps;
+    std::vector<SearchNode> tree;
+    SearchStats stats;
+    StopCondition stop;
+    stop.set_max_boxes(n);
+    EXPECT_FALSE(branch_and_prune(root_box(), steps, tree, stats, {}, -1, -1, nullptr, &stop));
+    EXPECT_EQ(stats.processed, n);
+    EXPECT_EQ(int(stop.reason()), int(StopReason::MaxBoxes));
+    EXPECT_EQ(long(steps.pruned.size()), n);
+    size_t unexplored = 0;
+    long discarded = 0;
+    for (const auto& s : tree) {
+      discarded += s.split_var < 0 && s.fate == LeafFate::Discarded;
+      if (s.fate == LeafFate::Unexplored) {
+        ++unexplored;
+        EXPECT_GE(s.leaf, 0);
+        EXPECT_EQ(s.split_var, -1);
+      }
+    }
+    EXPECT_EQ(discarded, stats.discarded) << n;  // no cell silently dropped
+    EXPECT_EQ(unexplored, steps.unexplored.size()) << n;
+    EXPECT_GE(unexplored, 1u) << n;
+    EXPECT_TRUE(partitions(leaf_cells(tree, kRoot), kRoot)) << n;
+    // Output indices in preorder, unexplored ones last (what the merge requires).
+    for (size_t k = 0; k < steps.unexplored.size(); ++k)
+      EXPECT_EQ(steps.unexplored[k], int32_t(steps.leaves.size() - steps.unexplored.size() + k));
+    for (size_t k = 0; k < steps.pruned.size(); ++k) {
+      EXPECT_EQ(cell_of(steps.pruned[k].in), cell_of(full.pruned[k].in)) << n << " " << k;
+    }
+  }
+}
+
+// The engine stopped at several points on PRRP (4 aspects, certified by the full run):
+// the merged tree's leaves partition the root, every solution box of the partial result
+// is one of the full result, and the lower bound never exceeds the full run's.
+TEST(BranchAndPrune, StoppedEngineRunIsASoundPartialResult) {
+  set_working_precision(53);
+  auto solve = [](long max_boxes, int threads) {
+    Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/prrp.robot");
+    AspectsConfig cfg;
+    cfg.eps = 0.2;
+    cfg.threads = threads;
+    cfg.keep_link_proofs = false;
+    StopCondition stop;
+    if (max_boxes > 0) stop.set_max_boxes(max_boxes);
+    cfg.stop = &stop;
+    return std::make_pair(compute_aspects(m, cfg), cell_of(m.initial_box()));
+  };
+  auto [full, root] = solve(-1, 2);
+  ASSERT_TRUE(full.complete());
+  ASSERT_EQ(full.separation.lower_bound, 4);
+  std::set<std::vector<double>> full_solutions;
+  auto key = [](const AspectsResult& r, int b) {
+    std::vector<double> k;
+    for (int v = 0; v < r.boxes.nv(); ++v) k.push_back(r.boxes.lo(b, v)), k.push_back(r.boxes.hi(b, v));
+    return k;
+  };
+  for (int b = 0; b < full.boxes.size(); ++b)
+    if (full.certified[b]) full_solutions.insert(key(full, b));
+  ASSERT_GT(full.processed, 20);
+  for (long n : {3L, full.processed / 7, full.processed / 2, full.processed - 1})
+    for (int threads : {1, 2}) {
+      auto [r, root2] = solve(n, threads);
+      EXPECT_FALSE(r.complete()) << n;
+      EXPECT_EQ(int(r.stopped_by), int(StopReason::MaxBoxes));
+      EXPECT_EQ(r.processed, n) << n;
+      long unexplored = 0, leaves = 0, discarded = 0;
+      for (const auto& s : r.tree) {
+        unexplored += s.fate == LeafFate::Unexplored;
+        discarded += s.split_var < 0 && s.fate == LeafFate::Discarded;
+        leaves += s.leaf >= 0;
+      }
+      EXPECT_EQ(unexplored, r.unexplored);
+      EXPECT_EQ(discarded, r.discarded);  // no cell silently dropped
+      EXPECT_GE(unexplored, 1);
+      EXPECT_EQ(leaves, r.boxes.size());
+      EXPECT_TRUE(partitions(leaf_cells(r.tree, root2), root2)) << n;
+      for (int b = 0; b < r.boxes.size(); ++b) {
+        if (r.certified[b]) EXPECT_TRUE(full_solutions.count(key(r, b))) << n << " box " << b;
+      }
+      EXPECT_LE(r.separation.lower_bound, full.separation.lower_bound) << n;
     }
 }

@@ -1,0 +1,134 @@
+#!/usr/bin/python3
+"""long_runs.py — limits, interruption and partial results of `aspects solve` (issue 12).
+
+Usage: long_runs.py CASE ASPECTS CHECK_CERT ROBOTS_DIR WORKDIR
+
+Each CASE is one ctest test; each asserts exact exit codes and counts read from the
+outputs (never hard-coded results), so that it fails when the behaviour breaks.
+"""
+import csv
+import json
+import os
+import resource
+import signal
+import subprocess
+import sys
+import time
+
+CASE, ASPECTS, CHECK, ROBOTS, WORK = sys.argv[1:6]
+RRRRR = os.path.join(ROBOTS, "rrrrr.robot")
+
+
+def fail(msg):
+    print("FAIL [%s]: %s" % (CASE, msg))
+    sys.exit(1)
+
+
+def run(args, expect, **kw):
+    p = subprocess.run([ASPECTS] + args, capture_output=True, text=True, **kw)
+    if p.returncode != expect:
+        fail("%s: exit %d, expected %d\n%s%s" % (" ".join(args), p.returncode, expect, p.stdout, p.stderr))
+    return p
+
+
+def fresh(name):
+    d = os.path.join(WORK, name)
+    subprocess.run(["rm", "-rf", d], check=True)
+    return d
+
+
+def check_partial(d, reason, verify=True):
+    """The outputs of a stopped run agree with each other and the certificate verifies."""
+    s = json.load(open(os.path.join(d, "summary.json")))
+    if s["complete"] is not False or s["stopped_by"] != reason:
+        fail("summary says complete=%r stopped_by=%r, expected false/%s" % (s["complete"], s["stopped_by"], reason))
+    rows = list(csv.reader(open(os.path.join(d, "boxes.csv"))))[1:]
+    count = {}
+    for r in rows:
+        count[r[1]] = count.get(r[1], 0) + 1
+    b = s["boxes"]
+    if len(rows) != b["total"] or count.get("unexplored", 0) != b["unexplored"] or b["unexplored"] < 1:
+        fail("boxes.csv %r against summary %r" % (count, b))
+    if count.get("solution", 0) != b["solution"] or count.get("undecided", 0) != b["undecided"]:
+        fail("boxes.csv %r against summary %r" % (count, b))
+    if any(r[2] != "-1" for r in rows if r[1] == "unexplored"):
+        fail("an unexplored box in a CSNC")
+    leftovers = [f for f in os.listdir(d) if ".tmp" in f]
+    if leftovers:
+        fail("temporary files left: %r" % leftovers)
+    if not verify:
+        return s
+    cert = os.path.join(d, "aspects.cert")
+    records = sum(1 for line in open(cert) if line.startswith("N "))
+    if records != b["unexplored"]:
+        fail("%d N records, %d unexplored boxes" % (records, b["unexplored"]))
+    p = subprocess.run([CHECK, "--json", cert], capture_output=True, text=True)
+    if p.returncode != 0:
+        fail("check_cert exit %d: %s%s" % (p.returncode, p.stdout, p.stderr))
+    v = json.loads(p.stdout)
+    if v["complete"] is not False or v["unexplored"] != b["unexplored"] or v["lower_bound"] != s["csncs"]["separated_lower_bound"]:
+        fail("check_cert says %r" % v)
+    p = subprocess.run([CHECK, cert], capture_output=True, text=True)
+    if " complete=no " not in p.stdout:
+        fail("no complete=no in %r" % p.stdout)
+    return s
+
+
+def case_max_boxes():
+    # Stopped after N boxes with one thread: exactly N processed; with two, also N.
+    for threads in ("1", "2"):
+        d = fresh("max_boxes_" + threads)
+        run(["solve", RRRRR, "--eps", "0.5", "--threads", threads, "--max-boxes", "700", "--out", d, "--quiet"], 3)
+        s = check_partial(d, "max-boxes")
+        if s["boxes"]["processed"] != 700:
+            fail("processed %d boxes, expected 700" % s["boxes"]["processed"])
+    # A complete run says so, and check_cert says complete=yes.
+    d = fresh("complete")
+    run(["solve", os.path.join(ROBOTS, "prrp.robot"), "--eps", "0.1", "--out", d, "--quiet"], 0)
+    s = json.load(open(os.path.join(d, "summary.json")))
+    if s["complete"] is not True or s["stopped_by"] is not None or s["boxes"]["unexplored"] != 0:
+        fail("complete run: %r %r" % (s["complete"], s["stopped_by"]))
+    p = subprocess.run([CHECK, os.path.join(d, "aspects.cert")], capture_output=True, text=True)
+    if p.returncode != 0 or " complete=yes " not in p.stdout:
+        fail("complete run: %s" % p.stdout)
+
+
+def case_time_limit():
+    d = fresh("time_limit")
+    t = time.time()
+    run(["solve", RRRRR, "--eps", "0.05", "--threads", "2", "--time-limit", "1", "--out", d, "--quiet"], 3)
+    check_partial(d, "time-limit")
+    if time.time() - t > 30:
+        fail("a 1 s time limit took %.1f s" % (time.time() - t))
+
+
+def case_memory_limit():
+    # The limit is the program's own: the child's peak resident memory stays below it.
+    d = fresh("memory_limit")
+    limit_gib = 0.04
+    run(["solve", RRRRR, "--eps", "0.1", "--threads", "2", "--memory-limit", str(limit_gib), "--out", d, "--quiet"], 3)
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024.0
+    check_partial(d, "memory-limit", verify=False)
+    if peak >= limit_gib * 2 ** 30:
+        fail("peak memory %.1f MiB above the limit %.1f MiB" % (peak / 2 ** 20, limit_gib * 1024))
+
+
+def case_signal():
+    for sig, name in ((signal.SIGINT, "SIGINT"), (signal.SIGTERM, "SIGTERM")):
+        d = fresh("signal_" + name)
+        p = subprocess.Popen([ASPECTS, "solve", RRRRR, "--eps", "0.1", "--threads", "2", "--out", d, "--quiet"],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(1)  # the search runs (about 20 s in all)
+        p.send_signal(sig)
+        out, err = p.communicate(timeout=120)
+        if p.returncode != 3:
+            fail("%s: exit %d\n%s" % (name, p.returncode, err))
+        check_partial(d, "signal", verify=(sig == signal.SIGINT))
+
+
+CASES = {k[5:]: v for k, v in globals().items() if k.startswith("case_")}
+if CASE not in CASES:
+    fail("unknown case; known: %s" % ", ".join(sorted(CASES)))
+os.makedirs(WORK, exist_ok=True)
+CASES[CASE]()
+print("ok", CASE)
