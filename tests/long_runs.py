@@ -126,6 +126,70 @@ def case_signal():
         check_partial(d, "signal", verify=(sig == signal.SIGINT))
 
 
+def drop_leaf(lines, i, replacement=None):
+    """Removes the output box of tree record i (an N record), and the record itself or
+    replaces it by `replacement` (a record without an output box), renumbering the later boxes everywhere so that the edit reaches the
+    proofs instead of the id checks."""
+    gone = int(lines[i].split(" ")[1])
+    out = []
+    in_tree = False
+    for k, line in enumerate(lines):
+        f = line.split(" ")
+        if k == i:
+            if replacement:
+                out.append(replacement)
+            continue
+        if f[0] == "tree":
+            in_tree = True
+        elif f[0].startswith("end-tree"):
+            in_tree = False
+            f[1] = str(int(f[1]) - 1)
+        elif in_tree and f[0] in ("U", "S", "N") and int(f[1]) > gone:
+            f[1] = str(int(f[1]) - 1)
+        elif f[0] == "K" or f[0] == "W":
+            lo = 1 if f[0] == "K" else 2
+            for j in (lo, lo + 1):
+                assert int(f[j]) != gone
+                f[j] = str(int(f[j]) - (int(f[j]) > gone))
+        elif f[0] == "csnc":
+            f[3:] = [str(int(x) - (int(x) > gone)) for x in f[3:]]
+        elif f[0] == "end":
+            f[1] = str(len(out))
+        out.append(" ".join(f))
+    return out
+
+
+def check_tampered(name, lines, expect_exit, word):
+    path = os.path.join(WORK, name + ".cert")
+    with open(path, "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    p = subprocess.run([CHECK, path], capture_output=True, text=True)
+    if p.returncode != expect_exit or word not in p.stdout:
+        fail("%s: exit %d (expected %d with %r): %s" % (name, p.returncode, expect_exit, word, p.stdout))
+
+
+def case_partial_tamper():
+    # Stopped early (3 boxes), the unexplored cells are large and hold solutions: removing
+    # one leaves a cell uncovered; calling them discarded is a claim the checker refutes.
+    d = fresh("partial_tamper")
+    run(["solve", RRRRR, "--eps", "0.5", "--threads", "1", "--max-boxes", "3", "--out", d, "--quiet"], 3)
+    check_partial(d, "max-boxes")
+    lines = open(os.path.join(d, "aspects.cert")).read().split("\n")[:-1]
+    unexplored = [i for i, line in enumerate(lines) if line.startswith("N ")]
+    if len(unexplored) < 2:
+        fail("expected several N records, got %d" % len(unexplored))
+    check_tampered("last_unexplored_removed", drop_leaf(lines, unexplored[-1]), 1, "uncovered")
+    check_tampered("first_unexplored_removed", drop_leaf(lines, unexplored[0]), 1, "REJECTED")
+    for k, i in enumerate(unexplored):
+        check_tampered("unexplored_%d_as_discarded" % k, drop_leaf(lines, i, "X hs"), 1,
+                       "cannot refute the discarded cell")
+    # Relabelled undecided: the same claims (an output box that may hold solutions), so
+    # accepted, and then complete=yes: `complete` says whether the solver searched every
+    # cell, not something the claims depend on.
+    relabelled = [("U" + line[1:]) if line.startswith("N ") else line for line in lines]
+    check_tampered("unexplored_as_undecided", relabelled, 0, "complete=yes")
+
+
 CASES = {k[5:]: v for k, v in globals().items() if k.startswith("case_")}
 if CASE not in CASES:
     fail("unknown case; known: %s" % ", ".join(sorted(CASES)))

@@ -97,6 +97,7 @@ struct Checker {
   std::string model_sha;
   long solutions = 0;
   long undecided = 0;
+  long unexplored = 0;
   long links = 0;
   std::vector<int32_t> csnc_of;
   size_t csncs_count = 0;  // CSNC of each output box (-1: none), from the csnc records
@@ -496,7 +497,7 @@ void Checker::outcome(const Fields& f, Box& cell, Stack& stack) {
     bisection(f, cell, stack);
   } else if (k == "X") {
     discard(f, cell);
-  } else if (k == "U" || k == "S") {
+  } else if (k == "U" || k == "S" || k == "N") {
     output_leaf(f, cell);
   } else if (k == "end-tree") {
     malformed(rec(), "node without an outcome record");
@@ -540,8 +541,10 @@ void Checker::output_leaf(const Fields& f, const Box& cell) {
   }
   count(f, 3);
   pr->load(cell.data());
+  // N (a cell a stopped search never reached) is checked and used as U is: its box is the
+  // cell, it may hold solutions, and the bound counts it in every compatible class.
   store(f[2], false, cell.data(), false);
-  ++undecided;
+  ++(k == "N" ? unexplored : undecided);
 }
 
 void Checker::link_section(UnionFind& uf) {
@@ -756,6 +759,7 @@ void Checker::run(const CheckOptions& o, Verdict& out) {
   out.robot = m.name;
   out.solutions = solutions;
   out.undecided = undecided;
+  out.unexplored = unexplored;
   out.links = links;
   out.csncs = long(sizes.size());
   out.cuspidal = cuspidal;
@@ -826,6 +830,7 @@ struct Count {
 std::vector<Count> counts(const Verdict& v) {
   return {{"solutions", v.solutions, true},
           {"undecided", v.undecided, true},
+          {"unexplored", v.unexplored, true},
           {"links", v.links, true},
           {"csncs", v.csncs, true},
           {"cuspidal", v.cuspidal, true},
@@ -843,6 +848,7 @@ std::string text_line(const Verdict& v) {
     return s + ": " + v.reason;
   }
   s += " sha256(cert)=" + v.cert_sha + " sha256(model)=" + v.model_sha;
+  s += v.unexplored ? " complete=no" : " complete=yes";  // no: a stopped run's certificate
   for (const Count& c : counts(v))
     if (c.in_text) s += std::string(" ") + c.name + "=" + std::to_string(c.value);
   s += " robot=" + quoted(v.robot);
@@ -859,6 +865,7 @@ std::string json_line(const Verdict& v, int code) {
     s += ", \"sha256_cert\": " + quoted(v.cert_sha);
     s += ", \"sha256_model\": " + quoted(v.model_sha);
     s += ", \"robot\": " + quoted(v.robot);
+    s += std::string(", \"complete\": ") + (v.unexplored ? "false" : "true");
     for (const Count& c : counts(v))
       s += std::string(", \"") + c.name + "\": " + std::to_string(c.value);
     s += std::string(", \"user_factors\": ") + (v.user_factors ? "true" : "false");
