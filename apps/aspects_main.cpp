@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "aspects_version.h"
+#include "checkpoint.h"
 #include "model.h"
 #include "model_info.h"
 #include "path_command.h"
@@ -51,6 +52,11 @@ int main(int argc, char** argv) {
                     "stop the search after N processed boxes and write a partial result (exit 3)");
   solve->add_option("--memory-limit", so.memory_limit,
                     "stop the search before the process needs more than GiB of memory (exit 3)");
+  solve->add_option("--checkpoint", so.checkpoint,
+                    "every SECONDS and when stopped, save a resumable state in the --out directory");
+  solve->add_option("--resume", so.resume_dir,
+                    "continue the stopped run of DIR from its checkpoint (same outputs as an "
+                    "uninterrupted run)");
 
   QueryOptions qo;
   auto* query =
@@ -91,6 +97,9 @@ int main(int argc, char** argv) {
       print_model_info(m, std::cout);
       return 0;
     }
+    for (const char* name : {"MODEL", "--eps", "--prec", "--tau", "--bisect", "--all-links",
+                             "--no-cert", "--out", "--checkpoint"})
+      if (solve->count(name) > 0) so.given.push_back(name);
     if (*query) return run_query(qo);
     if (*path) return run_path(po);
     return run_solve(so);
@@ -99,6 +108,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const ModelError& e) {
     std::cerr << e.what() << '\n';
+    return 2;
+  } catch (const CheckpointError& e) {
+    std::cerr << "aspects: " << e.what() << '\n';
     return 2;
   } catch (const UsageError& e) {
     std::cerr << "aspects: " << e.what() << '\n';

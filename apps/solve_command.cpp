@@ -19,6 +19,9 @@
 #include "generalized_aspects.h"
 #include "model.h"
 #include "result_index.h"
+#include "checkpoint.h"
+#include "solve_resume.h"
+#include "search_state.h"
 #include "stop_condition.h"
 
 namespace aspects {
@@ -170,10 +173,20 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
 int run_solve(const SolveOptions& opts) {
   validate(opts);
   SolveOptions o = opts;
+  // Resuming: the options and the model come from the checkpoint (checked against any
+  // given again); the parts it holds are not searched again.
+  std::unique_ptr<Checkpoint> resumed;
+  if (!o.resume_dir.empty()) {
+    resumed = std::make_unique<Checkpoint>(read_checkpoint(o.resume_dir + "/" + kCheckpointName));
+    adopt_checkpoint(o, resumed->header);
+  }
+  if (o.checkpoint > 0 && o.out_dir.empty())
+    throw UsageError("--checkpoint needs --out DIR (the checkpoint is written there)");
   if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
   set_working_precision(o.prec);
-  Model model = o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
-                                     : load_model(o.model_path);
+  Model model = resumed ? resumed_model(o, resumed->header)
+                : o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
+                                       : load_model(o.model_path);
 
   AspectsConfig cfg;
   cfg.eps = o.eps;
@@ -215,6 +228,46 @@ int run_solve(const SolveOptions& opts) {
       cfg.certificate = cert.get();
     }
   }
+  if (resumed) {
+    SearchState& st = resumed->state;
+    if (cert && st.top_done) {
+      cert->restore(-1, resumed->top_records);
+      for (size_t k = 0; k < st.deferred.size(); ++k)
+        if (st.done[k]) cert->restore(int32_t(k), resumed->records[k]);
+    }
+    cfg.resume = &st;
+  }
+  // Checkpoints: the header names what the state belongs to; a failed write keeps the
+  // previous checkpoint and is reported (the run goes on; a failed last one is an error).
+  CheckpointHeader header;
+  bool checkpoint_failed = false;
+  const std::string checkpoint_path = o.out_dir + "/" + kCheckpointName;
+  if (o.checkpoint > 0) {
+    header.version = ASPECTS_VERSION_FULL;
+    header.model_sha256 = sha256_hex(model.source);
+    header.model_text = model.source;
+    header.model_file = o.model_path;
+    header.eps = o.eps;
+    header.tau = o.tau;
+    header.precision = o.prec;
+    header.bisect = o.bisect;
+    header.all_links = o.all_links;
+    header.no_cert = o.no_cert;
+    header.defer_depth = cfg.defer_depth;
+    header.checkpoint_seconds = o.checkpoint;
+    header.nv = uint32_t(model.vars.size());
+    cfg.checkpoint_seconds = o.checkpoint;
+    cfg.checkpoint = [&](const SearchState& st, const std::vector<uint8_t>& done) {
+      header.p = uint32_t(st.top.out.factors.size());
+      try {
+        write_checkpoint(checkpoint_path, header, st, done, cert.get());
+        checkpoint_failed = false;
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "aspects: %s; the previous checkpoint is kept\n", e.what());
+        checkpoint_failed = true;
+      }
+    };
+  }
   AspectsResult r = compute_aspects(model, cfg);
   if (show)
     std::fprintf(stderr, "%s[aspects] done: %ld boxes processed, %d output boxes, %zu certified links, %.1f s, %.0f MiB\n",
@@ -244,6 +297,12 @@ int run_solve(const SolveOptions& opts) {
     std::printf("CSNCs: %zu, filtered: %d\n", r.csnc_sizes.size(), r.filtered);
     std::printf("separated lower bound on the number of aspects: %d\n", r.separation.lower_bound);
     std::printf("time: %.3f s\n", r.seconds);
+  }
+  if (r.complete() && !o.out_dir.empty()) std::remove(checkpoint_path.c_str());  // done with it
+  if (!r.complete() && checkpoint_failed) {
+    std::fprintf(stderr, "aspects: stopped by %s, but the checkpoint could not be written: "
+                         "this run cannot be resumed\n", stop_reason_name(r.stopped_by));
+    return 1;
   }
   if (!r.complete()) {
     // On stderr even with --quiet: scripts see exit 3, a user sees why.

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace aspects {
 
@@ -23,6 +24,11 @@ struct SolveOptions {
   double time_limit = -1;    // seconds
   long max_boxes = -1;       // boxes processed
   double memory_limit = -1;  // GiB
+  // Checkpoints (apps/checkpoint.h): the interval in seconds (negative: none), and the
+  // directory of a stopped run to continue (its options come from its checkpoint).
+  double checkpoint = -1;
+  std::string resume_dir;
+  std::vector<std::string> given;  // the options given on the command line ("--eps", "MODEL")
 };
 
 // Exit status of a run stopped by a limit or a signal (its outputs are a partial result).

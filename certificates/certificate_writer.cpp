@@ -5,6 +5,8 @@
 
 #include <cstdarg>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "aspects_version.h"
@@ -90,7 +92,28 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
   line("factors " + std::to_string(p_));
   for (const auto& f : factors) line("factor " + f.kind);
   line("tree");
-  top_ = std::make_unique<TreeRecordFile>(tmp_ + ".top", p_, n_);
+  if (!top_) top_ = std::make_unique<TreeRecordFile>(tmp_ + ".top", p_, n_);  // else restored
+}
+
+std::string CertificateWriter::records(int32_t task) {
+  TreeRecordFile& part = task < 0 ? *top_ : *tasks_.at(task);
+  part.close();
+  std::ifstream in(part.path(), std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw std::runtime_error("cannot read " + part.path());
+  return text;
+}
+
+void CertificateWriter::restore(int32_t task, const std::string& records) {
+  std::unique_ptr<TreeRecordFile>* slot = &top_;
+  if (task >= 0) {
+    if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);
+    slot = &tasks_[task];
+  }
+  std::string name = task < 0 ? ".top" : ".t" + std::to_string(task);
+  *slot = std::make_unique<TreeRecordFile>(tmp_ + name, p_, n_);
+  (*slot)->write(records);
+  (*slot)->close();
 }
 
 TreeSink* CertificateWriter::subtree(int32_t task) {
@@ -143,8 +166,17 @@ TreeRecordFile::~TreeRecordFile() {
 }
 
 void TreeRecordFile::close() {
-  if (f_ && std::fclose(f_) != 0) throw std::runtime_error("cannot write " + path_);
+  if (!f_) return;
+  // A write that failed earlier (disk full) leaves only the error flag: check it too.
+  bool ok = !std::ferror(f_);
+  ok = std::fclose(f_) == 0 && ok;
   f_ = nullptr;
+  if (!ok) throw std::runtime_error("cannot write " + path_);
+}
+
+void TreeRecordFile::write(const std::string& records) {
+  if (std::fwrite(records.data(), 1, records.size(), f_) != records.size())
+    throw std::runtime_error("cannot write " + path_);
 }
 
 void TreeRecordFile::signs(const int8_t* s) {

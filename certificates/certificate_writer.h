@@ -35,6 +35,7 @@ class TreeRecordFile : public TreeSink {
 
   const std::string& path() const { return path_; }
   void close();  // flushes; the file can then be read back
+  void write(const std::string& records);
 
  private:
   void signs(const int8_t* s);
@@ -54,6 +55,12 @@ class CertificateWriter : public CertificateSink {
   void begin(const Box& domain, const std::vector<Factor>& factors) override;
   TreeSink* top() override { return top_.get(); }
   TreeSink* subtree(int32_t task) override;
+
+  // Checkpoints (apps/checkpoint.*): the records of a finished part (task -1: the top),
+  // and a finished part's records put back before a resumed search (instead of searching
+  // it: then neither top() nor subtree(task) is called for it).
+  std::string records(int32_t task);
+  void restore(int32_t task, const std::string& records);
 
   // Links, CSNCs and claims; then closes and renames the file into place.
   void finish(const Model& model, const AspectsResult& result);

@@ -22,6 +22,11 @@ class BoxStore {
     }
     return size() - 1;
   }
+  // The endpoints, box after box (lo, hi per variable): for checkpoints.
+  const std::vector<double>& coords() const { return coords_; }
+  void append_coords(const double* lohi, size_t boxes) {
+    coords_.insert(coords_.end(), lohi, lohi + boxes * 2 * size_t(nv_));
+  }
   void get(int i, Box& b) const {
     b.resize(nv_);
     for (int v = 0; v < nv_; ++v) b[v].set_hull(lo(i, v), hi(i, v));

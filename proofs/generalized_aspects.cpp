@@ -19,6 +19,7 @@
 #include "contractor.h"
 #include "determinant_factors.h"
 #include "model_eval.h"
+#include "search_state.h"
 
 namespace aspects {
 
@@ -169,13 +170,6 @@ class AspectsSearch : public BranchAndPruneSteps {
 
 namespace {
 
-// Output boxes and tree of one part of the search (the top of the tree, or a subtree).
-struct SearchPart {
-  AspectsResult out;
-  std::vector<SearchNode> tree;
-  int32_t next_leaf = 0;  // merge cursor: leaves are taken in their local order
-};
-
 // Rebuilds one tree from the top part and the subtrees, in depth-first preorder, and
 // numbers the output boxes in that order (the order of the certificate's records).
 class PartMerger {
@@ -254,52 +248,101 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
 
   // The top of the tree, then the subtrees below `defer_depth`, in parallel. The
   // result does not depend on the number of threads: the subtrees are fixed, and are
-  // merged back in depth-first order.
+  // merged back in depth-first order. Parts already in a resumed state are not searched.
   auto new_part = [&](SearchPart& part) {
     part.out.factors = out.factors;
     part.out.boxes = BoxStore(nv);
   };
-  SearchPart top;
-  new_part(top);
-  std::vector<DeferredSubtree> deferred;
-  {
-    AspectsSearch search(model, config, top.out, cert ? cert->top() : nullptr);
-    branch_and_prune(root, search, top.tree, stats, tick, -1, config.defer_depth, &deferred,
-                     config.stop);
+  SearchState fresh;
+  SearchState& st = config.resume ? *config.resume : fresh;
+  if (!st.top_done) {
+    st = SearchState();
+    new_part(st.top);
+    TreeSink* sink = cert ? cert->top() : nullptr;
+    AspectsSearch search(model, config, st.top.out, sink);
+    st.top_done = branch_and_prune(root, search, st.top.tree, stats, tick, -1,
+                                   config.defer_depth, &st.deferred, config.stop);
+    if (sink) sink->finished();
+    st.parts.resize(st.deferred.size());
+    st.done.assign(st.deferred.size(), 0);
   }
-  std::vector<SearchPart> parts(deferred.size());
-  std::vector<TreeSink*> sinks(deferred.size(), nullptr);
-  for (size_t k = 0; k < deferred.size(); ++k) {
-    new_part(parts[k]);
+  auto fits = [&](SearchPart& part) {  // a resumed part must fit this model
+    part.out.factors = out.factors;       // (not saved in checkpoints)
+    return part.out.signs.size() == size_t(part.out.boxes.size()) * out.factors.size();
+  };
+  bool fit = fits(st.top);
+  for (size_t k = 0; k < st.deferred.size(); ++k) fit = fit && (!st.done[k] || fits(st.parts[k]));
+  if (!fit) throw std::runtime_error("resumed search state does not match the model's factors");
+  std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);
+  for (size_t k = 0; k < st.deferred.size(); ++k) {
+    if (st.done[k]) continue;
+    new_part(st.parts[k]);
     if (cert) sinks[k] = cert->subtree(int32_t(k));
   }
+  // Checkpoints: `done` changes under `state_lock`; the callback gets a copy, and reads
+  // only finished parts, which no thread changes any more.
+  std::mutex state_lock, checkpoint_lock;
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  auto checkpoint = [&](bool forced) {
+    if (!config.checkpoint) return;
+    std::unique_lock<std::mutex> one(checkpoint_lock, std::defer_lock);
+    if (forced) one.lock();
+    else if (!one.try_lock()) return;
+    std::vector<uint8_t> done;
+    {
+      std::lock_guard<std::mutex> g(state_lock);
+      auto now = std::chrono::steady_clock::now();
+      if (!forced && std::chrono::duration<double>(now - last_checkpoint).count() <
+                         config.checkpoint_seconds)
+        return;
+      done = st.done;
+    }
+    config.checkpoint(st, done);
+    std::lock_guard<std::mutex> g(state_lock);
+    last_checkpoint = std::chrono::steady_clock::now();
+  };
   tbb::task_arena arena(std::max(1, config.threads));
   arena.execute([&] {
-    tbb::parallel_for(size_t(0), deferred.size(), [&](size_t k) {
+    tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
+      if (st.done[k]) return;
       set_working_precision(prec);  // MPFR's default precision is per thread
-      AspectsSearch search(model, config, parts[k].out, sinks[k]);
-      branch_and_prune(deferred[k].box, search, parts[k].tree, stats, tick,
-                       deferred[k].parent_split, -1, nullptr, config.stop);
+      AspectsSearch search(model, config, st.parts[k].out, sinks[k]);
+      bool complete = branch_and_prune(st.deferred[k].box, search, st.parts[k].tree, stats, tick,
+                                       st.deferred[k].parent_split, -1, nullptr, config.stop);
       if (sinks[k]) sinks[k]->finished();
-      deferred[k].box.clear();
+      if (complete) {
+        std::lock_guard<std::mutex> g(state_lock);
+        st.done[k] = 1;
+      }
+      if (config.checkpoint_seconds > 0) checkpoint(false);
     }, tbb::simple_partitioner());
   });
-  PartMerger(parts, out).graft(top, 0);
-  out.diagnostics.add(top.out.diagnostics);
-  for (const auto& part : parts) out.diagnostics.add(part.out.diagnostics);
-  parts.clear();
+  bool all_done = st.top_done;
+  for (uint8_t d : st.done) all_done = all_done && d;
+  if (!all_done) checkpoint(true);  // stopped: what a resumed run needs
+  for (auto& part : st.parts) part.next_leaf = 0;
+  PartMerger(st.parts, out).graft(st.top, 0);
+  out.diagnostics.add(st.top.out.diagnostics);
+  for (const auto& part : st.parts) out.diagnostics.add(part.out.diagnostics);
+  st = SearchState();  // merged into `out`: a resumed state is consumed
   auto lap = [&, last = t0](const char* phase) mutable {
     auto now = std::chrono::steady_clock::now();
     out.phase_seconds.emplace_back(phase, std::chrono::duration<double>(now - last).count());
     last = now;
   };
   lap("search");
-  out.processed = stats.processed;
-  out.solutions = stats.solutions;
-  out.undecided = stats.undecided;
-  out.discarded = stats.discarded;
-  for (int b = 0; b < out.boxes.size(); ++b)
-    out.unexplored += out.undecided_kind[b] == UndecidedKind::Unexplored;
+  // Counted on the merged tree, not by `stats`: a resumed run did not process every node.
+  for (const SearchNode& node : out.tree) {
+    if (node.split_var >= 0) {
+      ++out.processed;
+      continue;
+    }
+    out.processed += node.fate != LeafFate::Unexplored;
+    out.solutions += node.fate == LeafFate::Solution;
+    out.undecided += node.fate == LeafFate::Undecided;
+    out.discarded += node.fate == LeafFate::Discarded;
+    out.unexplored += node.fate == LeafFate::Unexplored;
+  }
   if (out.unexplored > 0) out.stopped_by = config.stop->reason();
 
   // 4.3.1: neighbourhood graph over R = S ∪ U.

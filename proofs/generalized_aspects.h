@@ -32,6 +32,8 @@
 
 namespace aspects {
 
+struct SearchState;
+
 struct AspectsConfig {
   double eps = 0.1;
   double tau = 1.01;
@@ -47,6 +49,14 @@ struct AspectsConfig {
   // Limits and signals (core/stop_condition.h): when it says stop, the cells not yet
   // searched are kept as unexplored output boxes and the rest of the method runs as usual.
   StopCondition* stop = nullptr;
+  // Resuming (proofs/search_state.h): the parts already searched are taken from here,
+  // the others searched; the state is consumed (empty on return).
+  SearchState* resume = nullptr;
+  // Called every `checkpoint_seconds` while subtrees are searched, and once more when the
+  // search stopped early, with the state and which subtrees are done (a snapshot: parts
+  // not done may be changing). From a worker thread, never two calls at once.
+  std::function<void(const SearchState&, const std::vector<uint8_t>& done)> checkpoint;
+  double checkpoint_seconds = 0;
   std::function<void(const SearchStats&)> progress;
 };
 

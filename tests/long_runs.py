@@ -190,6 +190,99 @@ def case_partial_tamper():
     check_tampered("unexplored_as_undecided", relabelled, 0, "complete=yes")
 
 
+OUTPUTS = ("boxes.csv", "aspects.cert", "aspects.idx")
+VARYING = ("time_seconds", "phase_seconds", "peak_memory_mib", "threads")  # not results
+
+
+def same_outputs(a, b, what):
+    """The result files of two runs are equal byte for byte (summary.json but its times)."""
+    for name in OUTPUTS:
+        if open(os.path.join(a, name), "rb").read() != open(os.path.join(b, name), "rb").read():
+            fail("%s: %s differs from the uninterrupted run's" % (what, name))
+    sa, sb = (json.load(open(os.path.join(d, "summary.json"))) for d in (a, b))
+    for k in VARYING:
+        sa.pop(k, None)
+        sb.pop(k, None)
+    if sa != sb:
+        fail("%s: summary.json differs: %r" % (what, {k: (sa.get(k), sb.get(k)) for k in sa if sa.get(k) != sb.get(k)}))
+    if os.path.exists(os.path.join(b, "checkpoint")):
+        fail("%s: the checkpoint is left after the run completed" % what)
+
+
+def reference(eps="0.7"):
+    d = fresh("reference_" + CASE)
+    run(["solve", RRRRR, "--eps", eps, "--threads", "2", "--out", d, "--quiet"], 0)
+    return d, json.load(open(os.path.join(d, "summary.json")))["boxes"]["processed"]
+
+
+def case_resume_identical():
+    # Stopped at several points (inside the top of the tree, early, late, twice in a row),
+    # then resumed: the same boxes, links, CSNCs, bound and certificate, byte for byte.
+    ref, processed = reference()
+    plans = [[20], [processed // 5], [processed - 50], [processed // 3, processed // 3]]
+    for i, stops in enumerate(plans):
+        d = fresh("resume_%d" % i)
+        run(["solve", RRRRR, "--eps", "0.7", "--threads", "2", "--out", d, "--quiet", "--checkpoint", "1000",
+             "--max-boxes", str(stops[0])], 3)
+        if not os.path.exists(os.path.join(d, "checkpoint")):
+            fail("no checkpoint after a stop")
+        for n in stops[1:]:
+            run(["solve", "--resume", d, "--quiet", "--threads", "1", "--max-boxes", str(n)], 3)
+            check_partial(d, "max-boxes")  # a resumed, stopped again run: a sound partial result
+        run(["solve", "--resume", d, "--quiet", "--threads", str(1 + i % 2)], 0)
+        same_outputs(ref, d, "stopped at %r and resumed" % stops)
+
+
+def patch_checkpoint(data, old, new):
+    """Replaces a header string (same length) and recomputes the SHA-256 trailer."""
+    import hashlib
+    assert len(old) == len(new) and data.count(old) >= 1
+    body = data[:-32].replace(old, new, 1)
+    return body + hashlib.sha256(body).digest()
+
+
+def case_checkpoint_refused():
+    ref, processed = reference()
+    d = fresh("refused")
+    run(["solve", RRRRR, "--eps", "0.7", "--threads", "2", "--out", d, "--quiet", "--checkpoint", "1000",
+         "--max-boxes", str(processed // 2)], 3)
+    path = os.path.join(d, "checkpoint")
+    good = open(path, "rb").read()
+
+    def refused(args, word, data=None):
+        if data is not None:
+            open(path, "wb").write(data)
+        p = run(["solve"] + args + ["--resume", d, "--quiet"], 2)
+        if word not in p.stderr:
+            fail("%r: no %r in %r" % (args, word, p.stderr))
+        if open(path, "rb").read() != (good if data is None else data):
+            fail("%r: the checkpoint was changed" % args)
+
+    refused([os.path.join(ROBOTS, "prrp.robot")], "not the model the checkpoint was made for")
+    refused(["--eps", "0.5"], "--eps 0.5 differs from the checkpoint's 0.69999")
+    refused(["--prec", "64"], "--prec 64 differs from the checkpoint's 53")
+    refused(["--tau", "1.1"], "--tau")
+    refused(["--bisect", "pose-first"], "--bisect")
+    version = json.load(open(os.path.join(ref, "summary.json")))["version"].encode()
+    refused([], "written by aspects", patch_checkpoint(good, version, b"9" * len(version)))
+    refused([], "damaged checkpoint (checksum", good[: len(good) // 2])          # truncated
+    refused([], "damaged checkpoint (checksum", good[:100] + bytes([good[100] ^ 1]) + good[101:])
+    refused([], "damaged", good[:30])
+    # The good one, put back, still resumes to the uninterrupted result; the model, eps and
+    # precision given again and equal are accepted.
+    open(path, "wb").write(good)
+    run(["solve", RRRRR, "--eps", "0.7", "--prec", "53", "--resume", d, "--quiet"], 0)
+    same_outputs(ref, d, "resumed after refusals")
+    empty = fresh("no_checkpoint")
+    os.makedirs(empty)
+    p = run(["solve", "--resume", empty], 2)
+    if "no checkpoint to resume from" not in p.stderr:
+        fail("missing checkpoint: %r" % p.stderr)
+    p = run(["solve", "--checkpoint", "10"], 2)
+    if "--checkpoint needs --out" not in p.stderr:
+        fail("--checkpoint without --out: %r" % p.stderr)
+
+
 CASES = {k[5:]: v for k, v in globals().items() if k.startswith("case_")}
 if CASE not in CASES:
     fail("unknown case; known: %s" % ", ".join(sorted(CASES)))

@@ -412,9 +412,10 @@ TEST(BranchAndPrune, StoppedEngineRunIsASoundPartialResult) {
       EXPECT_GE(unexplored, 1);
       EXPECT_EQ(leaves, r.boxes.size());
       EXPECT_TRUE(partitions(leaf_cells(r.tree, root2), root2)) << n;
-      for (int b = 0; b < r.boxes.size(); ++b) {
-        if (r.certified[b]) EXPECT_TRUE(full_solutions.count(key(r, b))) << n << " box " << b;
-      }
+      for (int b = 0; b < r.boxes.size(); ++b)
+        if (r.certified[b]) {
+          EXPECT_TRUE(full_solutions.count(key(r, b))) << n << " box " << b;
+        }
       EXPECT_LE(r.separation.lower_bound, full.separation.lower_bound) << n;
     }
 }

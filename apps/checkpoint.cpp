@@ -1,0 +1,384 @@
+#include "checkpoint.h"
+
+#include <fcntl.h>
+#include <openssl/evp.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "certificate_writer.h"
+
+namespace aspects {
+
+namespace {
+
+// Layout (integers and doubles little-endian; a string is a u64 length and its bytes):
+//   "aspects-checkpoint 1\n"
+//   str version  str model_sha256  str model_text  str model_file  f64 eps  f64 tau
+//   i64 precision  str bisect  u8 all_links  u8 no_cert  i32 defer_depth
+//   f64 checkpoint_seconds  u32 nv  u32 p
+//   u8 top_done; when 1:
+//     part(top)  str top_records
+//     u32 D  D × (nv × (f64 lo  f64 hi)  i32 parent_split  i32 node)
+//     D × (u8 done; when 1: part  str records)
+//   32 bytes: SHA-256 of everything before
+// part = u32 T  T × (i32 left  i32 right  i32 split_var  f64 split  i32 leaf  u8 fate
+//                    i32 reason)
+//        u32 B  B × nv × (f64 lo  f64 hi)  B × u8 certified  B × u8 undecided_kind
+//        B × p × i8 sign  (2 × kVerdicts + 3) × i64 diagnostics
+const char kMagic[] = "aspects-checkpoint 1\n";
+constexpr size_t kDigest = 32;
+
+class Sha256 {
+ public:
+  Sha256() : ctx_(EVP_MD_CTX_new()) { EVP_DigestInit_ex(ctx_, EVP_sha256(), nullptr); }
+  ~Sha256() { EVP_MD_CTX_free(ctx_); }
+  void add(const void* p, size_t n) { EVP_DigestUpdate(ctx_, p, n); }
+  std::string digest() {
+    unsigned char d[EVP_MAX_MD_SIZE];
+    unsigned int len = 0;
+    EVP_DigestFinal_ex(ctx_, d, &len);
+    return std::string(reinterpret_cast<char*>(d), len);
+  }
+
+ private:
+  EVP_MD_CTX* ctx_;
+};
+
+// Streams to a file while hashing, so a large state is never held twice in memory.
+class Out {
+ public:
+  explicit Out(FILE* f) : f_(f) {}
+  void bytes(const void* p, size_t n) {
+    sha_.add(p, n);
+    ok_ = std::fwrite(p, 1, n, f_) == n && ok_;
+  }
+  void u64(uint64_t v) {
+    unsigned char b[8];
+    for (int i = 0; i < 8; ++i) b[i] = (v >> (8 * i)) & 0xffu;
+    bytes(b, 8);
+  }
+  void u32(uint32_t v) {
+    unsigned char b[4];
+    for (int i = 0; i < 4; ++i) b[i] = (v >> (8 * i)) & 0xffu;
+    bytes(b, 4);
+  }
+  void u8(uint8_t v) { bytes(&v, 1); }
+  void i32(int32_t v) { u32(uint32_t(v)); }
+  void f64(double d) {
+    uint64_t v;
+    std::memcpy(&v, &d, 8);
+    u64(v);
+  }
+  void str(const std::string& s) {
+    u64(s.size());
+    bytes(s.data(), s.size());
+  }
+  bool finish() {
+    std::string d = sha_.digest();
+    ok_ = std::fwrite(d.data(), 1, d.size(), f_) == d.size() && ok_;
+    return ok_;
+  }
+
+ private:
+  FILE* f_;
+  Sha256 sha_;
+  bool ok_ = true;
+};
+
+class In {
+ public:
+  In(const std::string& b, size_t end, const std::string& path) : b_(b), end_(end), path_(path) {}
+  [[noreturn]] void fail(const std::string& why) const {
+    throw CheckpointError(path_ + ": damaged checkpoint (" + why + " at byte " +
+                          std::to_string(pos_) + "): refused, and left as it is");
+  }
+  void need(uint64_t n) const {
+    if (end_ - pos_ < n) fail("truncated");
+  }
+  uint64_t u64() {
+    need(8);
+    uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) v |= uint64_t(uint8_t(b_[pos_ + i])) << (8 * i);
+    pos_ += 8;
+    return v;
+  }
+  uint32_t u32() {
+    need(4);
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= uint32_t(uint8_t(b_[pos_ + i])) << (8 * i);
+    pos_ += 4;
+    return v;
+  }
+  uint8_t u8() {
+    need(1);
+    return uint8_t(b_[pos_++]);
+  }
+  int32_t i32() { return int32_t(u32()); }
+  double f64() {
+    uint64_t v = u64();
+    double d;
+    std::memcpy(&d, &v, 8);
+    return d;
+  }
+  std::string str() {
+    uint64_t n = u64();
+    need(n);
+    std::string s = b_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  // A count of records of at least `bytes` each, checked before anything is allocated.
+  uint32_t count(uint64_t bytes) {
+    uint32_t c = u32();
+    if (uint64_t(c) * bytes > end_ - pos_) fail("a count larger than the file");
+    return c;
+  }
+  bool at_end() const { return pos_ == end_; }
+
+ private:
+  const std::string& b_;
+  size_t end_, pos_ = 0;
+  std::string path_;
+};
+
+void write_part(Out& o, const SearchPart& part, uint32_t p) {
+  o.u32(uint32_t(part.tree.size()));
+  for (const SearchNode& s : part.tree) {
+    o.i32(s.left);
+    o.i32(s.right);
+    o.i32(s.split_var);
+    o.f64(s.split);
+    o.i32(s.leaf);
+    o.u8(uint8_t(s.fate));
+    o.i32(s.reason);
+  }
+  const AspectsResult& r = part.out;
+  const uint32_t boxes = uint32_t(r.boxes.size());
+  o.u32(boxes);
+  for (double x : r.boxes.coords()) o.f64(x);
+  for (uint32_t b = 0; b < boxes; ++b) o.u8(r.certified[b]);
+  for (uint32_t b = 0; b < boxes; ++b) o.u8(uint8_t(r.undecided_kind[b]));
+  for (size_t i = 0; i < size_t(boxes) * p; ++i) o.u8(uint8_t(r.signs[i]));
+  const SearchDiagnostics& d = r.diagnostics;
+  for (int k = 0; k < kVerdicts; ++k) o.u64(uint64_t(d.attempts[k]));
+  for (int k = 0; k < kVerdicts; ++k) o.u64(uint64_t(d.undecided[k]));
+  for (long x : {d.refuted_by_equation, d.refuted_by_newton, d.refuted_by_constraint})
+    o.u64(uint64_t(x));
+}
+
+// Reads a part and checks that its indices stay in range (the merge trusts them);
+// `deferred` is the number of subtrees its Deferred leaves may name (the top's).
+void read_part(In& in, SearchPart& part, const CheckpointHeader& h, uint32_t deferred) {
+  const uint32_t nodes = in.count(29);
+  part.tree.resize(nodes);
+  for (SearchNode& s : part.tree) {
+    s.left = in.i32();
+    s.right = in.i32();
+    s.split_var = in.i32();
+    s.split = in.f64();
+    s.leaf = in.i32();
+    uint8_t fate = in.u8();
+    if (fate > uint8_t(LeafFate::Unexplored)) in.fail("bad leaf fate");
+    s.fate = LeafFate(fate);
+    s.reason = in.i32();
+  }
+  AspectsResult& r = part.out;
+  const uint32_t boxes = in.count(16 * uint64_t(h.nv) + 2 + h.p);
+  std::vector<double> coords(size_t(boxes) * 2 * h.nv);
+  for (double& x : coords) x = in.f64();
+  r.boxes = BoxStore(int(h.nv));
+  r.boxes.append_coords(coords.data(), boxes);
+  r.certified.resize(boxes);
+  for (auto& c : r.certified) c = in.u8();
+  r.undecided_kind.resize(boxes);
+  for (auto& k : r.undecided_kind) {
+    uint8_t v = in.u8();
+    if (v > uint8_t(UndecidedKind::Unexplored)) in.fail("bad undecided kind");
+    k = UndecidedKind(v);
+  }
+  r.signs.resize(size_t(boxes) * h.p);
+  for (auto& s : r.signs) s = int8_t(in.u8());
+  SearchDiagnostics& d = r.diagnostics;
+  for (int k = 0; k < kVerdicts; ++k) d.attempts[k] = long(in.u64());
+  for (int k = 0; k < kVerdicts; ++k) d.undecided[k] = long(in.u64());
+  for (long* x : {&d.refuted_by_equation, &d.refuted_by_newton, &d.refuted_by_constraint})
+    *x = long(in.u64());
+  for (const SearchNode& s : part.tree) {
+    if (s.split_var >= 0) {
+      if (s.split_var >= int32_t(h.nv) || s.left <= 0 || s.right <= 0 ||
+          s.left >= int32_t(nodes) || s.right >= int32_t(nodes))
+        in.fail("bad tree node");
+    } else if (s.fate == LeafFate::Deferred) {
+      if (s.leaf < 0 || uint32_t(s.leaf) >= deferred) in.fail("bad deferred subtree");
+    } else if (s.leaf >= int32_t(boxes)) {
+      in.fail("bad output box");
+    }
+  }
+}
+
+void fsync_directory(const std::string& path) {
+  std::string dir = std::filesystem::path(path).parent_path().string();
+  int fd = open(dir.empty() ? "." : dir.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    fsync(fd);  // makes the rename durable; best effort
+    close(fd);
+  }
+}
+
+}  // namespace
+
+std::string sha256_hex(const std::string& data) {
+  Sha256 sha;
+  sha.add(data.data(), data.size());
+  std::string d = sha.digest(), s;
+  static const char* hex = "0123456789abcdef";
+  for (unsigned char c : d) {
+    s += hex[c >> 4];
+    s += hex[c & 15];
+  }
+  return s;
+}
+
+void write_checkpoint(const std::string& path, const CheckpointHeader& h, const SearchState& st,
+                      const std::vector<uint8_t>& done, CertificateWriter* cert) {
+  const std::string tmp = path + ".tmp." + std::to_string(getpid());
+  FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
+  bool ok = true;
+  try {
+    Out o(f);
+    o.bytes(kMagic, std::strlen(kMagic));
+    o.str(h.version);
+    o.str(h.model_sha256);
+    o.str(h.model_text);
+    o.str(h.model_file);
+    o.f64(h.eps);
+    o.f64(h.tau);
+    o.u64(uint64_t(h.precision));
+    o.str(h.bisect);
+    o.u8(h.all_links);
+    o.u8(h.no_cert);
+    o.i32(h.defer_depth);
+    o.f64(h.checkpoint_seconds);
+    o.u32(h.nv);
+    o.u32(h.p);
+    o.u8(st.top_done);
+    if (st.top_done) {
+      write_part(o, st.top, h.p);
+      o.str(cert ? cert->records(-1) : std::string());
+      o.u32(uint32_t(st.deferred.size()));
+      for (const DeferredSubtree& d : st.deferred) {
+        for (const Interval& x : d.box) {
+          o.f64(x.lo_down());
+          o.f64(x.hi_up());
+        }
+        o.i32(d.parent_split);
+        o.i32(d.node);
+      }
+      for (size_t k = 0; k < st.deferred.size(); ++k) {
+        o.u8(done[k]);
+        if (!done[k]) continue;
+        write_part(o, st.parts[k], h.p);
+        o.str(cert ? cert->records(int32_t(k)) : std::string());
+      }
+    }
+    ok = o.finish();
+  } catch (...) {
+    std::fclose(f);
+    std::remove(tmp.c_str());
+    throw;
+  }
+  ok = std::fflush(f) == 0 && ok;
+  ok = !std::ferror(f) && ok;
+  ok = fsync(fileno(f)) == 0 && ok;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write checkpoint " + path + " (disk full?)");
+  }
+  fsync_directory(path);
+}
+
+Checkpoint read_checkpoint(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
+    throw CheckpointError(path + ": no checkpoint to resume from (was the run started with "
+                                 "--checkpoint SECONDS --out DIR?)");
+  std::string b((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const size_t magic = std::strlen(kMagic);
+  if (b.size() < magic || b.compare(0, magic, kMagic) != 0)
+    throw CheckpointError(path + ": not an aspects checkpoint (or another format version)");
+  if (b.size() < magic + kDigest)
+    throw CheckpointError(path + ": damaged checkpoint (truncated): refused, and left as it is");
+  const size_t end = b.size() - kDigest;
+  Sha256 sha;
+  sha.add(b.data(), end);
+  if (sha.digest() != b.substr(end))
+    throw CheckpointError(path + ": damaged checkpoint (checksum mismatch: truncated or "
+                                 "corrupted): refused, and left as it is");
+  Checkpoint c;
+  CheckpointHeader& h = c.header;
+  In in(b, end, path);
+  in.need(magic);
+  for (size_t i = 0; i < magic; ++i) in.u8();
+  h.version = in.str();
+  h.model_sha256 = in.str();
+  h.model_text = in.str();
+  h.model_file = in.str();
+  h.eps = in.f64();
+  h.tau = in.f64();
+  h.precision = int64_t(in.u64());
+  h.bisect = in.str();
+  h.all_links = in.u8();
+  h.no_cert = in.u8();
+  h.defer_depth = in.i32();
+  h.checkpoint_seconds = in.f64();
+  h.nv = in.u32();
+  h.p = in.u32();
+  if (h.nv == 0 || h.nv > 16 || h.p > 20) in.fail("bad sizes");
+  if (h.precision < 24 || h.precision > 4096) in.fail("bad precision");
+  // The boxes below are intervals of the run's precision, as in the run that wrote them.
+  set_working_precision(long(h.precision));
+  if (sha256_hex(h.model_text) != h.model_sha256) in.fail("model text and hash differ");
+  SearchState& st = c.state;
+  st.top_done = in.u8();
+  if (st.top_done) {
+    read_part(in, st.top, h, UINT32_MAX);
+    c.top_records = in.str();
+    const uint32_t D = in.count(16 * uint64_t(h.nv) + 9);
+    st.deferred.resize(D);
+    for (DeferredSubtree& d : st.deferred) {
+      d.box.resize(h.nv);
+      for (Interval& x : d.box) {
+        double lo = in.f64(), hi = in.f64();
+        if (!(lo <= hi)) in.fail("bad box");
+        x.set_hull(lo, hi);
+      }
+      d.parent_split = in.i32();
+      d.node = in.i32();
+    }
+    st.done.assign(D, 0);
+    st.parts.resize(D);
+    c.records.resize(D);
+    for (uint32_t k = 0; k < D; ++k) {
+      st.done[k] = in.u8();
+      if (!st.done[k]) continue;
+      read_part(in, st.parts[k], h, 0);
+      c.records[k] = in.str();
+    }
+    for (const SearchNode& s : st.top.tree)
+      if (s.fate == LeafFate::Deferred && s.split_var < 0 && uint32_t(s.leaf) >= D)
+        in.fail("bad deferred subtree");
+  }
+  if (!in.at_end()) in.fail("trailing bytes");
+  return c;
+}
+
+}  // namespace aspects

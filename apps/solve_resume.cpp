@@ -1,0 +1,69 @@
+#include "solve_resume.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "aspects_version.h"
+
+namespace aspects {
+
+namespace {
+
+bool given(const SolveOptions& o, const char* name) {
+  return std::find(o.given.begin(), o.given.end(), name) != o.given.end();
+}
+
+std::string show(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+template <class T>
+void adopt(const SolveOptions& o, const char* name, T& value, const T& saved,
+           const std::string& value_text, const std::string& saved_text) {
+  if (given(o, name) && !(value == saved))
+    throw CheckpointError("--resume: " + std::string(name) + " " + value_text +
+                          " differs from the checkpoint's " + saved_text +
+                          " (give the same value, or leave the option out)");
+  value = saved;
+}
+
+}  // namespace
+
+void adopt_checkpoint(SolveOptions& o, const CheckpointHeader& h) {
+  if (h.version != ASPECTS_VERSION_FULL)
+    throw CheckpointError("--resume: the checkpoint was written by aspects " + h.version +
+                          ", this is aspects " ASPECTS_VERSION_FULL
+                          ": a state is resumed only by the program that wrote it");
+  adopt(o, "--eps", o.eps, h.eps, show(o.eps), show(h.eps));
+  long prec = long(h.precision);
+  adopt(o, "--prec", o.prec, prec, std::to_string(o.prec), std::to_string(prec));
+  adopt(o, "--tau", o.tau, h.tau, show(o.tau), show(h.tau));
+  adopt(o, "--bisect", o.bisect, h.bisect, o.bisect, h.bisect);
+  auto flag = [](bool b) { return std::string(b ? "given" : "not given"); };
+  bool all_links = h.all_links, no_cert = h.no_cert;
+  adopt(o, "--all-links", o.all_links, all_links, flag(o.all_links), flag(all_links));
+  adopt(o, "--no-cert", o.no_cert, no_cert, flag(o.no_cert), flag(no_cert));
+  namespace fs = std::filesystem;
+  if (given(o, "--out") && fs::weakly_canonical(o.out_dir) != fs::weakly_canonical(o.resume_dir))
+    throw UsageError("--out " + o.out_dir + " differs from --resume " + o.resume_dir +
+                     " (a resumed run writes where it was stopped)");
+  o.out_dir = o.resume_dir;
+  if (!given(o, "--checkpoint")) o.checkpoint = h.checkpoint_seconds;
+  if (!given(o, "MODEL")) o.model_path = h.model_file;
+}
+
+Model resumed_model(const SolveOptions& o, const CheckpointHeader& h) {
+  if (!given(o, "MODEL"))
+    return parse_model(h.model_text, h.model_file.empty() ? "(embedded RRRRR)" : h.model_file);
+  Model m = load_model(o.model_path);
+  if (sha256_hex(m.source) != h.model_sha256)
+    throw CheckpointError("--resume: " + o.model_path +
+                          " is not the model the checkpoint was made for (its text differs; "
+                          "leave MODEL out to use the checkpoint's)");
+  return m;
+}
+
+}  // namespace aspects

@@ -1,0 +1,20 @@
+// `aspects solve --resume DIR`: the options of the resumed run come from the checkpoint's
+// header; an option given again must agree with it (else CheckpointError, exit 2), so a
+// state is never mixed with another model, eps, precision or program version.
+#pragma once
+
+#include "checkpoint.h"
+#include "model.h"
+#include "solve_command.h"
+
+namespace aspects {
+
+// Sets o's eps, precision, tau, bisector, links mode, certificate, output directory and
+// checkpoint interval from h (refusing a version or explicit option that differs).
+void adopt_checkpoint(SolveOptions& o, const CheckpointHeader& h);
+
+// The model of the resumed run: MODEL when given again (its text must hash as the
+// checkpoint's), else the model text the checkpoint holds.
+Model resumed_model(const SolveOptions& o, const CheckpointHeader& h);
+
+}  // namespace aspects
