@@ -4,6 +4,7 @@
 #include <openssl/evp.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -295,13 +296,17 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
     std::remove(tmp.c_str());
     throw;
   }
-  ok = std::fflush(f) == 0 && ok;
-  ok = !std::ferror(f) && ok;
-  ok = fsync(fileno(f)) == 0 && ok;
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+  int err = ok ? 0 : (errno ? errno : EIO);  // the first failure's reason
+  auto check = [&](bool good) {
+    if (!good && !err) err = errno ? errno : EIO;
+  };
+  check(std::fflush(f) == 0 && !std::ferror(f));
+  check(fsync(fileno(f)) == 0);
+  check(std::fclose(f) == 0);
+  if (!err) check(std::rename(tmp.c_str(), path.c_str()) == 0);
+  if (err) {
     std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write checkpoint " + path + " (disk full?)");
+    throw std::runtime_error("cannot write checkpoint " + path + ": " + std::strerror(err));
   }
   fsync_directory(path);
 }

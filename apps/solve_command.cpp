@@ -179,6 +179,7 @@ int run_solve(const SolveOptions& opts) {
   if (!o.resume_dir.empty()) {
     resumed = std::make_unique<Checkpoint>(read_checkpoint(o.resume_dir + "/" + kCheckpointName));
     adopt_checkpoint(o, resumed->header);
+    remove_stale_temporaries(o.out_dir);  // a killed run's
   }
   if (o.checkpoint > 0 && o.out_dir.empty())
     throw UsageError("--checkpoint needs --out DIR (the checkpoint is written there)");

@@ -1,6 +1,10 @@
 #include "solve_resume.h"
 
+#include <signal.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 
@@ -53,6 +57,27 @@ void adopt_checkpoint(SolveOptions& o, const CheckpointHeader& h) {
   o.out_dir = o.resume_dir;
   if (!given(o, "--checkpoint")) o.checkpoint = h.checkpoint_seconds;
   if (!given(o, "MODEL")) o.model_path = h.model_file;
+}
+
+int remove_stale_temporaries(const std::string& dir) {
+  namespace fs = std::filesystem;
+  int removed = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    size_t at = name.find(".tmp.");
+    if (at == std::string::npos) continue;
+    const std::string base = name.substr(0, at);
+    if (base != "aspects.cert" && base != kCheckpointName && base != "boxes.csv" &&
+        base != "summary.json" && base != "aspects.idx")
+      continue;
+    char* end = nullptr;
+    long pid = std::strtol(name.c_str() + at + 5, &end, 10);
+    if (pid <= 0 || end == name.c_str() + at + 5) continue;
+    if (kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+    removed += fs::remove(entry.path(), ec) ? 1 : 0;
+  }
+  return removed;
 }
 
 Model resumed_model(const SolveOptions& o, const CheckpointHeader& h) {

@@ -17,4 +17,8 @@ void adopt_checkpoint(SolveOptions& o, const CheckpointHeader& h);
 // checkpoint's), else the model text the checkpoint holds.
 Model resumed_model(const SolveOptions& o, const CheckpointHeader& h);
 
+// Removes the temporary files a killed run left in `dir` (outputs and checkpoint written
+// under NAME.tmp.PID...) when process PID no longer exists; returns how many.
+int remove_stale_temporaries(const std::string& dir);
+
 }  // namespace aspects

@@ -3,6 +3,7 @@
 #include <openssl/sha.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdarg>
 #include <cstring>
 #include <fstream>
@@ -171,12 +172,12 @@ void TreeRecordFile::close() {
   bool ok = !std::ferror(f_);
   ok = std::fclose(f_) == 0 && ok;
   f_ = nullptr;
-  if (!ok) throw std::runtime_error("cannot write " + path_);
+  if (!ok) throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno ? errno : EIO));
 }
 
 void TreeRecordFile::write(const std::string& records) {
   if (std::fwrite(records.data(), 1, records.size(), f_) != records.size())
-    throw std::runtime_error("cannot write " + path_);
+    throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno ? errno : EIO));
 }
 
 void TreeRecordFile::signs(const int8_t* s) {
@@ -260,11 +261,13 @@ void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
   line("claim filtered " + std::to_string(r.filtered));
   line("claim lower-bound " + std::to_string(r.separation.lower_bound));
   line("end " + std::to_string(lines_));
-  bool ok = std::fflush(f_) == 0 && fsync(fileno(f_)) == 0;
+  bool ok = std::fflush(f_) == 0 && !std::ferror(f_) && fsync(fileno(f_)) == 0;
+  int err = ok ? 0 : errno;
   ok = std::fclose(f_) == 0 && ok;
+  err = err ? err : errno;
   f_ = nullptr;
   if (!ok || std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    throw std::runtime_error("cannot write " + path_);
+    throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(err ? err : errno ? errno : EIO));
   finished_ = true;
 }
 

@@ -283,6 +283,80 @@ def case_checkpoint_refused():
         fail("--checkpoint without --out: %r" % p.stderr)
 
 
+def limited(size):
+    """A child whose files cannot grow past `size` bytes: a full disk, as write() sees it
+    (EFBIG; SIGXFSZ ignored so the write fails instead of killing the process)."""
+    def pre():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (size, size))
+    return pre
+
+
+def no_half_written(ref, d, what):
+    """Every file under a final name is complete (equal to the reference run's); no
+    temporary file is left."""
+    for name in os.listdir(d):
+        if ".tmp" in name:
+            fail("%s: temporary file left: %s" % (what, name))
+        if name in OUTPUTS and open(os.path.join(d, name), "rb").read() != open(os.path.join(ref, name), "rb").read():
+            fail("%s: %s is half-written" % (what, name))
+
+
+def case_disk_full():
+    ref, processed = reference()
+    size = {n: os.path.getsize(os.path.join(ref, n)) for n in OUTPUTS}
+    # During the search (the certificate's records), when the certificate is complete,
+    # and, without a certificate, when boxes.csv is written.
+    for limit, extra in ((3000, []), (size["aspects.cert"] // 2, []), (size["boxes.csv"] // 2, ["--no-cert"])):
+        d = fresh("disk_full_%d" % limit)
+        os.makedirs(d)
+        p = run(["solve", RRRRR, "--eps", "0.7", "--threads", "2", "--out", d, "--quiet"] + extra, 1,
+                preexec_fn=limited(limit))
+        if "cannot write" not in p.stderr or "File too large" not in p.stderr:
+            fail("limit %d: unclear error %r" % (limit, p.stderr))
+        no_half_written(ref, d, "limit %d" % limit)
+    # A checkpointed run whose later checkpoints and outputs no longer fit: the previous
+    # checkpoint is kept, unchanged, and resumes (without the limit) to the same result.
+    d = fresh("disk_full_checkpoint")
+    run(["solve", RRRRR, "--eps", "0.7", "--threads", "2", "--out", d, "--quiet", "--checkpoint", "1000",
+         "--max-boxes", str(processed // 3)], 3)
+    path = os.path.join(d, "checkpoint")
+    good = open(path, "rb").read()
+    p = run(["solve", "--resume", d, "--quiet", "--threads", "2", "--checkpoint", "0.2"], 1,
+            preexec_fn=limited(len(good) + 100))
+    if "cannot write" not in p.stderr:
+        fail("resumed on a full disk: %r" % p.stderr)
+    if open(path, "rb").read() != good:
+        fail("the previous good checkpoint was not kept")
+    run(["solve", "--resume", d, "--quiet"], 0)
+    same_outputs(ref, d, "resumed after a full disk")
+
+
+def case_sigkill():
+    # Killed (SIGKILL, no chance to clean up) at a random moment of a checkpointed run,
+    # then resumed: the uninterrupted run's result. Random moments; the seed is printed.
+    import random
+    seed = int(os.environ.get("LONG_RUNS_SEED", str(int(time.time()))))
+    rng = random.Random(seed)
+    print("seed", seed)
+    ref, processed = reference()
+    for attempt in range(2):
+        d = fresh("sigkill_%d" % attempt)
+        p = subprocess.Popen([ASPECTS, "solve", RRRRR, "--eps", "0.7", "--threads", "2", "--out", d, "--quiet",
+                              "--checkpoint", "0.05"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        path = os.path.join(d, "checkpoint")
+        while not os.path.exists(path) and p.poll() is None:
+            time.sleep(0.01)
+        time.sleep(rng.uniform(0, 0.8))
+        p.kill()
+        p.wait()
+        if p.returncode != -signal.SIGKILL:
+            fail("the run ended (exit %d) before it was killed" % p.returncode)
+        run(["solve", "--resume", d, "--quiet", "--threads", "2"], 0)
+        same_outputs(ref, d, "killed and resumed (seed %d, attempt %d)" % (seed, attempt))
+        no_half_written(ref, d, "killed and resumed")  # the killed run's temporaries removed
+
+
 CASES = {k[5:]: v for k, v in globals().items() if k.startswith("case_")}
 if CASE not in CASES:
     fail("unknown case; known: %s" % ", ".join(sorted(CASES)))
