@@ -21,6 +21,7 @@
 #include "result_index.h"
 #include "checkpoint.h"
 #include "solve_resume.h"
+#include "solve_progress.h"
 #include "search_state.h"
 #include "stop_condition.h"
 
@@ -165,6 +166,7 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
                                    {"hansen_sengupta", r.diagnostics.refuted_by_newton},
                                    {"constraint", r.diagnostics.refuted_by_constraint}}}};
   j["peak_memory_mib"] = resident_mib();
+  j["domain_decided"] = decided_share(m, r);  // share of the domain's volume; 1 when complete
   return j;
 }
 
@@ -206,19 +208,8 @@ int run_solve(const SolveOptions& opts) {
   cfg.stop = &stop;
   const bool tty = isatty(STDERR_FILENO);
   const bool show = o.progress || tty;
-  auto start = std::chrono::steady_clock::now();
-  auto last = start;
-  if (show)
-    cfg.progress = [&](const SearchStats& s) {
-      auto now = std::chrono::steady_clock::now();
-      // A terminal gets one line rewritten in place; a log gets a line every 10 s.
-      if (now - last < std::chrono::milliseconds(tty ? 500 : 10000)) return;
-      last = now;
-      double t = std::chrono::duration<double>(now - start).count();
-      std::fprintf(stderr, "%s[aspects] %ld boxes processed, %ld solution, %ld undecided, %.0f boxes/s, %.0f MiB%s",
-                   tty ? "\r" : "", long(s.processed), long(s.solutions), long(s.undecided),
-                   double(s.processed) / std::max(t, 1e-9), resident_mib(), tty ? "   " : "\n");
-    };
+  SolveProgress progress(tty);
+  if (show) cfg.progress = [&](const SearchStats& s) { progress.tick(s); };
 
   std::unique_ptr<CertificateWriter> cert;
   if (!o.out_dir.empty()) {
@@ -270,10 +261,7 @@ int run_solve(const SolveOptions& opts) {
     };
   }
   AspectsResult r = compute_aspects(model, cfg);
-  if (show)
-    std::fprintf(stderr, "%s[aspects] done: %ld boxes processed, %d output boxes, %zu certified links, %.1f s, %.0f MiB\n",
-                 tty ? "\r" : "", r.processed, r.boxes.size(), r.certified_links.size(),
-                 r.seconds, resident_mib());
+  if (show) progress.done(model, r, resident_mib());
 
   if (!o.out_dir.empty()) {
     if (cert) cert->finish(model, r);

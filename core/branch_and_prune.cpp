@@ -4,6 +4,19 @@
 
 namespace aspects {
 
+double SearchStats::share(const Box& cell) const {
+  double f = 1;
+  for (size_t v = 0; v < domain_width.size(); ++v)
+    if (domain_width[v] > 0) f *= (cell[v].hi_up() - cell[v].lo_down()) / domain_width[v];
+  return f;
+}
+
+void SearchStats::add_decided(double x) {
+  double old = decided.load(std::memory_order_relaxed);
+  while (!decided.compare_exchange_weak(old, old + x, std::memory_order_relaxed)) {
+  }
+}
+
 bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<SearchNode>& tree,
                       SearchStats& stats, const std::function<void()>& on_progress,
                       int root_parent_split, int defer_depth,
@@ -38,8 +51,11 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     }
     ++stats.processed;
     if (on_progress && (stats.processed & 1023) == 0) on_progress();
+    // The cell's share, before Prune narrows it: the refuted slabs are decided too.
+    const double cell_share = stats.domain_width.empty() ? 0 : stats.share(it.box);
     int32_t reason = -1;
     if (!steps.prune(it.box, reason)) {
+      stats.add_decided(cell_share);
       node.fate = LeafFate::Discarded;
       node.reason = reason;
       ++stats.discarded;
@@ -51,6 +67,7 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
       node.fate = LeafFate::Solution;
       node.leaf = index;
       ++stats.solutions;
+      stats.add_decided(cell_share);
       continue;
     }
     SplitChoice split = steps.choose_split(it.box, {it.parent_split, verdict});
@@ -58,8 +75,10 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
       node.fate = LeafFate::Undecided;
       node.leaf = steps.keep_undecided(it.box, verdict);
       ++stats.undecided;
+      stats.add_decided(cell_share);
       continue;
     }
+    if (cell_share > 0) stats.add_decided(cell_share - stats.share(it.box));  // the slabs
     int var = split.var;
     double p = split.at;
     steps.branched(var, p);

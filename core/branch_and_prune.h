@@ -54,6 +54,14 @@ class BranchAndPruneSteps {
 
 struct SearchStats {
   std::atomic<long> processed{0}, solutions{0}, undecided{0}, discarded{0};
+  // Progress only (never a claim): the share of the initial domain's volume whose cells are
+  // decided (solution, undecided or discarded leaves), when `domain` is set before the
+  // search. A variable of zero width (3-RRR*: x3 ∈ [0, 0]) counts as a factor 1.
+  std::vector<double> domain_width;
+  std::atomic<double> decided{0};  // by this run
+  double resumed_share = 0;        // decided before (a resumed run), not in `decided`
+  double share(const Box& cell) const;
+  void add_decided(double share);
 };
 
 // A subtree left for later (parallel) processing: its box, as Extract would have

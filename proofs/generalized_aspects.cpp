@@ -243,6 +243,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     };
   Box root = model.initial_box();
   for (auto& x : root) round_out_to_doubles(x);
+  for (const auto& x : root) stats.domain_width.push_back(x.hi_up() - x.lo_down());
   CertificateSink* cert = config.certificate;
   if (cert) cert->begin(root, out.factors);
 
@@ -273,6 +274,12 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   bool fit = fits(st.top);
   for (size_t k = 0; k < st.deferred.size(); ++k) fit = fit && (!st.done[k] || fits(st.parts[k]));
   if (!fit) throw std::runtime_error("resumed search state does not match the model's factors");
+  if (config.resume && st.top_done) {  // progress: what the checkpoint had decided
+    double decided = 1;
+    for (size_t k = 0; k < st.deferred.size(); ++k)
+      if (!st.done[k]) decided -= stats.share(st.deferred[k].box);
+    stats.resumed_share = decided;
+  }
   std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);
   for (size_t k = 0; k < st.deferred.size(); ++k) {
     if (st.done[k]) continue;

@@ -82,11 +82,14 @@ def case_max_boxes():
         s = check_partial(d, "max-boxes")
         if s["boxes"]["processed"] != 700:
             fail("processed %d boxes, expected 700" % s["boxes"]["processed"])
+        if not 0 < s["domain_decided"] < 1:
+            fail("a stopped run decided %r of the domain" % s["domain_decided"])
     # A complete run says so, and check_cert says complete=yes.
     d = fresh("complete")
     run(["solve", os.path.join(ROBOTS, "prrp.robot"), "--eps", "0.1", "--out", d, "--quiet"], 0)
     s = json.load(open(os.path.join(d, "summary.json")))
-    if s["complete"] is not True or s["stopped_by"] is not None or s["boxes"]["unexplored"] != 0:
+    if s["complete"] is not True or s["stopped_by"] is not None or s["boxes"]["unexplored"] != 0 \
+            or s["domain_decided"] != 1:
         fail("complete run: %r %r" % (s["complete"], s["stopped_by"]))
     p = subprocess.run([CHECK, os.path.join(d, "aspects.cert")], capture_output=True, text=True)
     if p.returncode != 0 or " complete=yes " not in p.stdout:
