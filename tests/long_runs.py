@@ -186,6 +186,11 @@ def case_partial_tamper():
     for k, i in enumerate(unexplored):
         check_tampered("unexplored_%d_as_discarded" % k, drop_leaf(lines, i, "X hs"), 1,
                        "cannot refute the discarded cell")
+    # A sign an unexplored cell does not have: its claimed signs are verified as U's are.
+    for i in unexplored:
+        f = lines[i].split(" ")
+        forged = lines[:i] + [" ".join(f[:2] + ["+" * len(f[2])])] + lines[i + 1:]
+        check_tampered("unexplored_%d_forged_signs" % i, forged, 1, "not proved")
     # Relabelled undecided: the same claims (an output box that may hold solutions), so
     # accepted, and then complete=yes: `complete` says whether the solver searched every
     # cell, not something the claims depend on.
