@@ -106,14 +106,24 @@ def case_time_limit():
 
 
 def case_memory_limit():
-    # The limit is the program's own: the child's peak resident memory stays below it.
+    # The limit is the program's own: the child's peak resident memory stays below it. The
+    # limit is set 24 MiB above what the program needs to start (more under sanitizers);
+    # the whole run needs far more (about 100 MiB).
+    # Under AddressSanitizer (redzones, a quarantine of freed memory) the program's memory
+    # is not what the limit's reserve per box was measured on: only the stop is checked.
+    sanitized = os.environ.get("LONG_RUNS_SANITIZED") == "1"
+    env = dict(os.environ)
     d = fresh("memory_limit")
-    limit_gib = 0.04
-    run(["solve", RRRRR, "--eps", "0.1", "--threads", "2", "--memory-limit", str(limit_gib), "--out", d, "--quiet"], 3)
-    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024.0
+    run(["solve", RRRRR, "--eps", "0.1", "--threads", "2", "--max-boxes", "1", "--out", d, "--quiet"], 3, env=env)
+    base = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024.0
+    limit = base + 24 * 2 ** 20
+    d = fresh("memory_limit")
+    run(["solve", RRRRR, "--eps", "0.1", "--threads", "2", "--memory-limit", "%.9f" % (limit / 2 ** 30), "--out", d,
+         "--quiet"], 3, env=env)
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024.0  # the larger child's
     check_partial(d, "memory-limit", verify=False)
-    if peak >= limit_gib * 2 ** 30:
-        fail("peak memory %.1f MiB above the limit %.1f MiB" % (peak / 2 ** 20, limit_gib * 1024))
+    if peak >= limit and not sanitized:
+        fail("peak memory %.1f MiB above the limit %.1f MiB" % (peak / 2 ** 20, limit / 2 ** 20))
 
 
 def case_signal():
