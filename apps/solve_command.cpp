@@ -32,9 +32,10 @@ namespace {
 double resident_mib() { return resident_bytes() / (1024.0 * 1024.0); }
 
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
-// Memory still needed per output box after the search stops, for the neighbourhood graph,
-// the links, the merge and the outputs: measured peak minus resident memory at the end of
-// the search, per output box, on RRRRR and 3-RPR (see tests/long_runs.sh), with a margin.
+// Memory still needed per output box after the search stops, for the merge, the
+// neighbourhood graph, the links and the outputs: the peak minus the resident memory at the
+// stop was about 600 bytes per output box on RRRRR (eps 0.05 and 0.1, two threads); 2 KiB
+// leaves room for a model with more variables (tests/long_runs.py, case memory_limit).
 constexpr double kReservePerBox = 2048;
 
 void validate(const SolveOptions& o) {
