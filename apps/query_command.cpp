@@ -5,6 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "generalized_aspects.h"  // UndecidedKind
 #include "pose.h"
 
 namespace aspects {
@@ -55,6 +56,7 @@ QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vec
     for (size_t j = 0; j < pose.size() && in; ++j)
       in = coordinate_in(pose[j], u.lo[j], u.hi[j], periodic[j]);
     if (in) q.undecided.push_back(u.id);
+    if (in) q.unexplored += u.kind == uint8_t(UndecidedKind::Unexplored);
   }
   q.outcome = q.undecided.empty() ? QueryOutcome::OutsideWorkspace : QueryOutcome::UndecidedRegion;
   return q;
@@ -102,9 +104,14 @@ void print_text(const LoadedResult& r, const std::vector<double>& pose, const Qu
                   "proved (close to a singularity)\n", q.unproved.size());
       break;
     case QueryOutcome::UndecidedRegion:
-      std::printf("no command: the pose lies in no solution box, only in %zu undecided box(es): "
-                  "near a singularity or a constraint boundary, or not resolved at eps %g\n",
-                  q.undecided.size(), r.index.eps);
+      if (q.unexplored)  // a partial result (aspects solve stopped early)
+        std::printf("no command: the pose lies in no solution box, only in %zu undecided box(es), "
+                    "%zu of them not searched (the run was stopped)\n",
+                    q.undecided.size(), q.unexplored);
+      else
+        std::printf("no command: the pose lies in no solution box, only in %zu undecided box(es): "
+                    "near a singularity or a constraint boundary, or not resolved at eps %g\n",
+                    q.undecided.size(), r.index.eps);
       break;
     case QueryOutcome::OutsideWorkspace:
       std::printf("no command: the pose lies in no box of the result, so no feasible command "

@@ -39,6 +39,7 @@ struct QueryResult {
   std::vector<QueryAnswer> answers;  // certified ones, by (CSNC, box id)
   std::vector<uint32_t> unproved;    // solution boxes containing the pose, no proof
   std::vector<uint32_t> undecided;   // undecided boxes containing the pose
+  size_t unexplored = 0;             // of which cells a stopped run never searched
 };
 
 const char* query_outcome_name(QueryOutcome o);

@@ -84,6 +84,14 @@ def case_max_boxes():
             fail("processed %d boxes, expected 700" % s["boxes"]["processed"])
         if not 0 < s["domain_decided"] < 1:
             fail("a stopped run decided %r of the domain" % s["domain_decided"])
+    # A pose in an unexplored box only: the query says the run was stopped.
+    rows = list(csv.reader(open(os.path.join(d, "boxes.csv"))))[1:]
+    u = [r for r in rows if r[1] == "unexplored"][0]
+    pose = ",".join(repr((float(u[4 + 2 * j]) + float(u[5 + 2 * j])) / 2) for j in range(2))
+    p = subprocess.run([ASPECTS, "query", d, "--pose=" + pose], capture_output=True, text=True)
+    # (a solution box may hold the pose too: then it is answered, exit 0)
+    if p.returncode != 0 and (p.returncode != 1 or "not searched (the run was stopped)" not in p.stdout):
+        fail("query in an unexplored box: exit %d %r" % (p.returncode, p.stdout + p.stderr))
     # A complete run says so, and check_cert says complete=yes.
     d = fresh("complete")
     run(["solve", os.path.join(ROBOTS, "prrp.robot"), "--eps", "0.1", "--out", d, "--quiet"], 0)
