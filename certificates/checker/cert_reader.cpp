@@ -45,7 +45,7 @@ LineReader::~LineReader() {
   std::free(line_buf_);
 }
 
-const std::vector<std::string_view>& LineReader::next() {
+LineReader& LineReader::next() {
   ssize_t n = getline(&line_buf_, &line_cap_, f_);
   ++line_;
   if (n <= 0) malformed(line_, "unexpected end of file");
@@ -65,7 +65,8 @@ const std::vector<std::string_view>& LineReader::next() {
     fields_.emplace_back(line_buf_ + start, i - start);
     start = i + 1;
   }
-  return fields_;
+  pos_ = 1;
+  return *this;
 }
 
 std::string LineReader::raw(size_t n) {
@@ -122,7 +123,7 @@ static int hex_digit(char c) {
 // normal number (E in 0..1023 with no leading zero), 0x0.H*[1-f]p-1022 for a subnormal,
 // 0x0p+0 for zero. Anything else (decimal, upper case, trailing zeros, inf, nan) is
 // malformed. The value mantissa·2^(exponent − 4·digits) is exact in binary64.
-double parse_real(std::string_view s, long rec) {
+static double parse_real(std::string_view s, long rec) {
   const size_t i = s[0] == '-' ? 1 : 0;
   bool ok = s.size() >= i + 6 && s.substr(i, 2) == "0x" && (s[i + 2] == '0' || s[i + 2] == '1');
   const int lead = ok ? s[i + 2] - '0' : 0;
@@ -149,25 +150,49 @@ double parse_real(std::string_view s, long rec) {
   return i ? -v : v;
 }
 
-const std::vector<std::string_view>& LineReader::expect(const std::vector<const char*>& words,
-                                                       size_t extra) {
+LineReader& LineReader::expect(const std::vector<const char*>& words, size_t extra) {
   next();
   return require(words, extra);
 }
 
-const std::vector<std::string_view>& LineReader::require(const std::vector<const char*>& words,
-                                                        size_t extra) {
-  const std::vector<std::string_view>& f = fields_;
-  bool ok = f.size() == words.size() + extra;
-  for (size_t i = 0; ok && i < words.size(); ++i) ok = f[i] == words[i];
+LineReader& LineReader::require(const std::vector<const char*>& words, size_t extra) {
+  bool ok = fields_.size() == words.size() + extra;
+  for (size_t i = 0; ok && i < words.size(); ++i) ok = fields_[i] == words[i];
   if (!ok) {
     std::string want;
     for (auto w : words) want += std::string(want.empty() ? "" : " ") + w;
     const std::string wanted = "expected '" + want + "' and " + std::to_string(extra);
-    const std::string found = "found '" + std::string(f[0]) + "' with " + std::to_string(f.size());
+    const std::string found = "found '" + std::string(kind()) + "' with " + std::to_string(size());
     malformed(line_, wanted + " field(s), " + found + " field(s)");
   }
-  return f;
+  pos_ = words.size();
+  return *this;
+}
+
+void LineReader::count(size_t k) {
+  if (size() != k) malformed(line_, std::string(kind()) + " record: wrong number of fields");
+}
+
+std::string_view LineReader::word() {
+  if (pos_ >= size()) malformed(line_, std::string(kind()) + " record: too few fields");
+  return fields_[pos_++];
+}
+
+int64_t LineReader::integer() { return parse_int(word(), line_); }
+
+double LineReader::real() { return parse_real(word(), line_); }
+
+std::vector<double> LineReader::reals(size_t k) {
+  std::vector<double> out(k);
+  for (double& x : out) x = real();
+  return out;
+}
+
+std::vector<double> LineReader::intervals(size_t k) {
+  std::vector<double> out = reals(2 * k);
+  for (size_t j = 0; j < k; ++j)
+    if (!(out[2 * j] <= out[2 * j + 1])) malformed(line_, "interval with LO > HI");
+  return out;
 }
 
 }  // namespace cc
