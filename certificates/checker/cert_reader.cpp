@@ -1,7 +1,6 @@
 // cert_reader.cpp — the lexical layer of the certificate: reads the file line by line with
 // getline(3), feeds every byte to a SHA-256 context, and refuses anything that is not
-// exactly in the canonical form of FORMAT.md. Reals follow the exact grammar of glibc's %a output,
-// which rejects decimal numbers, redundant zeros, upper case, infinities and NaNs.
+// exactly in the canonical form of FORMAT.md.
 #include "cert_reader.h"
 
 #include <cmath>
@@ -112,42 +111,17 @@ int64_t parse_int(std::string_view s, long rec) {
   return i ? -v : v;
 }
 
-// The value of a lowercase hexadecimal digit, or -1.
-static int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
-
-// The grammar of glibc's printf("%a") for a finite double: -?0x1(.H*[1-f])?p[+-]E for a
-// normal number (E in 0..1023 with no leading zero), 0x0.H*[1-f]p-1022 for a subnormal,
-// 0x0p+0 for zero. Anything else (decimal, upper case, trailing zeros, inf, nan) is
-// malformed. The value mantissa·2^(exponent − 4·digits) is exact in binary64.
+// A real is exactly what glibc's printf("%a") prints for a finite double (FORMAT.md): no
+// decimal form, no redundant zero, no upper case, no infinity or NaN. strtod reads a
+// hexadecimal float exactly, and printing its value back must give the field unchanged.
 static double parse_real(std::string_view s, long rec) {
-  const size_t i = s[0] == '-' ? 1 : 0;
-  bool ok = s.size() >= i + 6 && s.substr(i, 2) == "0x" && (s[i + 2] == '0' || s[i + 2] == '1');
-  const int lead = ok ? s[i + 2] - '0' : 0;
-  int digits = 0;
-  uint64_t mant = uint64_t(lead);
-  size_t k = i + 3;
-  if (ok && s[k] == '.') {
-    for (++k; k < s.size() && hex_digit(s[k]) >= 0; ++k) {
-      mant = mant * 16 + uint64_t(hex_digit(s[k]));
-      ++digits;
-    }
-    ok = digits >= 1 && digits <= 13 && s[k - 1] != '0';
-  }
-  ok = ok && k + 2 < s.size() && s[k] == 'p' && (s[k + 1] == '+' || s[k + 1] == '-');
-  std::string_view e = ok ? s.substr(k + 2) : std::string_view();
-  ok = ok && !e.empty() && e.size() <= 4 && !(e[0] == '0' && e.size() > 1) &&
-       e.find_first_not_of("0123456789") == std::string_view::npos;
-  const int sign = ok && s[k + 1] == '-' ? -1 : 1;  // s[k + 1] exists only when ok
-  const int exp = ok ? std::atoi(std::string(e).c_str()) * sign : 0;
-  if (ok && lead == 1) ok = exp >= -1022 && exp <= 1023;
-  if (ok && lead == 0) ok = digits ? exp == -1022 : (exp == 0 && s[k + 1] == '+');
-  if (!ok) malformed(rec, "bad real '" + std::string(s) + "' (expected a %a hexadecimal float)");
-  double v = std::ldexp(double(mant), exp - 4 * digits);
-  return i ? -v : v;
+  const std::string field(s);
+  const double v = std::strtod(field.c_str(), nullptr);
+  char back[64];
+  std::snprintf(back, sizeof back, "%a", v);
+  if (!std::isfinite(v) || field != back)
+    malformed(rec, "bad real '" + field + "' (expected a %a hexadecimal float)");
+  return v;
 }
 
 LineReader& LineReader::expect(const std::vector<const char*>& words, size_t extra) {
