@@ -154,7 +154,8 @@ void Checker::header() {
   if (rd.size() != 2 || rd.kind() != "aspects-certificate")
     malformed(rec(), "not an aspects certificate");
   const std::string_view v = rd.word();
-  if (v != "1" && v != "2") malformed(rec(), "unknown certificate version '" + std::string(v) + "'");
+  if (v != "1" && v != "2")
+    malformed(rec(), "unknown certificate version '" + std::string(v) + "'");
   version = v == "1" ? 1 : 2;
   rd.expect({"tool", "aspects"}, 1);  // the writer's version: free text (FORMAT.md)
   read_model();
@@ -165,7 +166,6 @@ void Checker::header() {
   for (int i = 0; i < p; ++i) factors.push_back(read_factor());
   rd.expect({"tree"}, 0);
   R.nv = nv;
-  R.p = p;
 }
 
 // The model record, its text, the precision and the declared bounds.
@@ -573,7 +573,8 @@ void Checker::witness() {
   const long a = index(R.size());
   const long b = index(R.size());
   const std::vector<int> k = shifts();
-  if (std::make_tuple(c, a, b) <= last_witness) reject("witnesses not sorted by (CSNC, A, B) or repeated");
+  if (std::make_tuple(c, a, b) <= last_witness)
+    reject("witnesses not sorted by (CSNC, A, B) or repeated");
   if (!(a < b)) reject("witness needs A < B");
   if (!R.solution[a] || !R.solution[b]) reject("witness boxes are not both solution boxes");
   if (csnc_of[a] != c || csnc_of[b] != c) reject("witness boxes are not both in the named CSNC");
