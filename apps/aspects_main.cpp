@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
                   "that join two components; the same CSNCs)");
   solve->add_flag("--quiet", so.quiet, "print no summary");
   solve->add_option("--bisect", so.bisect,
-                    "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose when P2 failed)")
+                    "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose "
+                    "where it blocked the proof, else round robin)")
       ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}))
       ->default_val("round-robin");
   solve->add_option("--time-limit", so.time_limit,

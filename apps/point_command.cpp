@@ -52,7 +52,7 @@ bool prove_inside(ModelEvaluator& ev, Box& w, const double* lo, const double* hi
                   HsWorkspace& ws, PointCommand& out) {
   const Model& m = ev.model();
   ExistenceProof proof;
-  if (!prove_existence(ev, w, tau, 8, proof, ws)) return false;
+  if (prove_existence(ev, w, tau, 8, proof, ws) != Existence::Proved) return false;
   out.lo.assign(m.n(), 0.0);
   out.hi.assign(m.n(), 0.0);
   for (int j = 0; j < m.n(); ++j) {

@@ -57,16 +57,18 @@ class PoseFirst : public Bisector {
   }
 };
 
-// P2 failed (P1 held): the commands are already a function of the pose on this box, and
-// only a narrower pose can make Fx or Fq regular, so cut the widest pose variable.
-// Otherwise (no existence proof yet) the paper's round robin.
+// Cut the pose when it is what blocked the proof: P2 failed (P1 held, so the commands are
+// already a function of the pose on this box, and only a narrower pose can make Fx or Fq
+// regular), or P1 failed because the pose spread the commands too far. Otherwise (two
+// branches, a singular point) the paper's round robin.
 class ByVerdict : public Bisector {
  public:
   ByVerdict(const Model& m, double eps) : Bisector(m, eps) {}
 
  protected:
   int variable(const Box& box, const SplitContext& ctx) const override {
-    if (ctx.verdict == Verdict::SingularFx || ctx.verdict == Verdict::SingularFq) {
+    if (ctx.verdict == Verdict::SingularFx || ctx.verdict == Verdict::SingularFq ||
+        ctx.verdict == Verdict::WidePose) {
       int v = widest_of(box, m_.pose, eps_);
       if (v >= 0) return v;
     }

@@ -40,7 +40,8 @@ class Bisector {
 enum class BisectorKind {
   RoundRobin,  // the paper (4.2.3): the variables in turn
   PoseFirst,   // the widest pose variable, the commands once the pose is narrow
-  Verdict,     // what blocked the proof: the pose when P2 failed, else round robin
+  Verdict,     // what blocked the proof: the pose when P2 failed or the pose spread P1,
+               // else round robin
 };
 
 // Parses "round-robin", "pose-first", "verdict"; false for anything else.

@@ -6,6 +6,7 @@ const char* verdict_name(Verdict v) {
   switch (v) {
     case Verdict::Solution: return "solution";
     case Verdict::NoExistence: return "no_existence";
+    case Verdict::WidePose: return "wide_pose";
     case Verdict::NotCovering: return "not_covering";
     case Verdict::OutsideDomain: return "outside_domain";
     case Verdict::SingularFx: return "singular_fx";

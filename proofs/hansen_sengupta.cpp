@@ -61,13 +61,29 @@ HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
   return HsStatus::Ok;
 }
 
-bool prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
-                     ExistenceProof& proof, HsWorkspace& ws) {
+namespace {
+
+// Row i of the sweep divides C·f([x], mid q) by (C·Fq)_ii: the quotient is at least
+// w(b_i) / mag(A_ii) wide whatever the commands, so when that is half the box or more,
+// the pose's spread blocks the inclusion (a heuristic for the bisector, not a proof).
+bool pose_spreads(const HsWorkspace& ws, const std::vector<Interval>& q) {
+  for (size_t i = 0; i < q.size(); ++i) {
+    double mag = std::max(std::fabs(ws.A(i, i).lo_down()), std::fabs(ws.A(i, i).hi_up()));
+    if (ws.b[i].width_up() >= 0.5 * mag * q[i].width_up()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
+                          ExistenceProof& proof, HsWorkspace& ws) {
   const Model& m = ev.model();
   const int n = m.n();
   Box work = box;
   proof.inflated.resize(n);
   std::vector<Interval> y;
+  Existence failure = Existence::NotProved;
   double start_width = 0;
   for (int j = 0; j < n; ++j) start_width = std::max(start_width, box[m.command[j]].width_up());
   for (int k = 0; k < max_iterations; ++k) {
@@ -82,7 +98,8 @@ bool prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_ite
       proof.inflated[j] = q;
     }
     HsStatus s = hansen_sengupta(ev, work, false, y, ws);
-    if (s != HsStatus::Ok) return false;
+    if (s != HsStatus::Ok) return failure;
+    if (k == 0 && pose_spreads(ws, proof.inflated)) failure = Existence::PoseSpread;
     bool inside = true;
     double width = 0;
     for (int j = 0; j < n; ++j) {
@@ -94,12 +111,12 @@ bool prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_ite
       proof.image = y;
       proof.C = ws.C;
       proof.iterations = k + 1;
-      return true;
+      return Existence::Proved;
     }
-    if (!(width <= 4 * start_width + 1e-300)) return false;  // diverging
+    if (!(width <= 4 * start_width + 1e-300)) return failure;  // diverging
     for (int j = 0; j < n; ++j) work[m.command[j]] = y[j];
   }
-  return false;
+  return failure;
 }
 
 }  // namespace aspects

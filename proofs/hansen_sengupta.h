@@ -43,10 +43,17 @@ struct ExistenceProof {
   int iterations = 0;
 };
 
-// Iteration (9) from the command part of `box`. True when the strict inclusion holds;
-// `proof` then records the iterate, its image and the preconditioner.
-bool prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
-                     ExistenceProof& proof, HsWorkspace& ws);
+enum class Existence {
+  Proved,      // the strict inclusion holds
+  PoseSpread,  // not proved, and on the first sweep the pose alone spread some command's
+               // image over at least half of its box: a narrower pose is what could help
+  NotProved,   // not proved otherwise (two branches, a singular point, no contraction)
+};
+
+// Iteration (9) from the command part of `box`. On Existence::Proved, `proof` records the
+// iterate, its image and the preconditioner.
+Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
+                          ExistenceProof& proof, HsWorkspace& ws);
 
 // Rounds both ends outward to doubles (a superset; identity at 53 bits).
 void round_out_to_doubles(Interval& x);

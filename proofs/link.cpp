@@ -50,7 +50,7 @@ bool certify_link(ModelEvaluator& ev, const BoxStore& R, const NeighborPair& pai
     w[v].set_point(x);
     proof.common[j] = w[m.command[j]];
   }
-  if (!prove_existence(ev, w, tau, 12, proof.existence, ws)) return false;
+  if (prove_existence(ev, w, tau, 12, proof.existence, ws) != Existence::Proved) return false;
   for (int j = 0; j < n; ++j)
     if (!proof.common[j].contains(proof.existence.image[j])) return false;
   return true;

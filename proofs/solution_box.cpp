@@ -21,7 +21,9 @@ bool SolutionBoxProver::covers_cell(const ExistenceProof& ex, const Box& cell) c
 Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& proof) {
   const int n = m_.n();
   ExistenceProof& ex = proof.existence;
-  if (!prove_existence(ev_, cell, tau_, max_iterations_, ex, ws_)) return Verdict::NoExistence;
+  Existence e = prove_existence(ev_, cell, tau_, max_iterations_, ex, ws_);
+  if (e == Existence::PoseSpread) return Verdict::WidePose;
+  if (e != Existence::Proved) return Verdict::NoExistence;
   // Coverage: when the iterate shrank below the cell, try once more from the hull of
   // both, so that the proved box contains the cell.
   if (!covers_cell(ex, cell)) {
@@ -30,7 +32,8 @@ Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& 
       int v = m_.command[j];
       mpfi_union(retry_[v].get(), cell[v].get(), ex.inflated[j].get());
     }
-    if (!prove_existence(ev_, retry_, tau_, 2, ex, ws_)) return Verdict::NoExistence;
+    if (prove_existence(ev_, retry_, tau_, 2, ex, ws_) != Existence::Proved)
+      return Verdict::NoExistence;
     if (!covers_cell(ex, cell)) return Verdict::NotCovering;
   }
   // Domain: a command outside its range is not a configuration of the robot. A periodic

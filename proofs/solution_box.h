@@ -10,7 +10,8 @@
 //    enclosure), and the pose meets the declared domain;
 //  - P2: Fx and Fq are strongly regular on B;
 //  - inner test: every additional constraint is certainly true on B.
-// Otherwise it returns the first property that failed, in that order. The recorded
+// Otherwise it returns the first property that failed, in that order (a failed P1 as
+// Verdict::WidePose when the pose's spread blocked it, else Verdict::NoExistence). The recorded
 // numbers (the proof) are widened by the margins of checker_margins.h.
 #pragma once
 

@@ -82,12 +82,13 @@ TEST(Bisector, PoseFirstCutsTheWidestPoseThenTheWidestCommand) {
   EXPECT_EQ(bis->choose(make_box({{0, 0.5}, {0, 8}, {0, 0.5}, {0, 9}}), {}).var, 3);  // b
 }
 
-TEST(Bisector, VerdictCutsThePoseWhereP2FailedAndIsRoundRobinOtherwise) {
+TEST(Bisector, VerdictCutsThePoseWhereItBlockedTheProofAndIsRoundRobinOtherwise) {
   Model m = parse_model(kModel, "t.robot");
   auto bis = make_bisector(BisectorKind::Verdict, m, 0.5);
   Box b = make_box({{0, 1}, {0, 8}, {0, 2}, {0, 4}});
   EXPECT_EQ(bis->choose(b, {0, Verdict::SingularFx}).var, 2);   // widest pose: y
   EXPECT_EQ(bis->choose(b, {0, Verdict::SingularFq}).var, 2);
+  EXPECT_EQ(bis->choose(b, {0, Verdict::WidePose}).var, 2);
   EXPECT_EQ(bis->choose(b, {0, Verdict::NoExistence}).var, 1);  // round robin after x: a
 }
 

@@ -86,7 +86,7 @@ R sqrt_root(double x) { return sqrt(R(x)); }
 
 bool prove(ModelEvaluator& ev, const Box& box, double tau, int iterations, ExistenceProof& p) {
   HsWorkspace ws;
-  return prove_existence(ev, box, tau, iterations, p, ws);
+  return prove_existence(ev, box, tau, iterations, p, ws) == Existence::Proved;
 }
 
 // n doubles spread over [lo, hi], both ends included.
@@ -190,6 +190,22 @@ TEST_F(HansenSengupta, SingularJacobianIsNeverProved) {
   HsWorkspace ws;
   std::vector<Interval> image;
   EXPECT_EQ(hansen_sengupta(ev2, line, true, image, ws), HsStatus::Failed);
+}
+
+// The failure's kind, for the bisector: on q^2 = x with [q] = [0.9, 1.2] holding the one
+// root of every x ∈ [1, 1.1], a pose [1, 9] spreads the root over [1, 3], more than the
+// 4 times [q] that iteration (9) may grow to (PoseSpread); at a point pose the two roots ±1 of [q] = [-1.5, 1.5] block it
+// (NotProved: a narrower pose cannot help). Break it to see it fail: make pose_spreads()
+// compare w(b_i) with 20 times the box (the first case fails).
+TEST_F(HansenSengupta, FailureSaysWhetherThePoseSpreadBlockedIt) {
+  Model m = parse_model(kSqrtModel, "sqrt");
+  ModelEvaluator ev(m);
+  HsWorkspace ws;
+  ExistenceProof p;
+  EXPECT_EQ(prove_existence(ev, box1(1.0, 9.0, 0.9, 1.2), 1.01, 8, p, ws), Existence::PoseSpread);
+  EXPECT_EQ(prove_existence(ev, box1(1.0, 1.1, 0.9, 1.2), 1.01, 8, p, ws), Existence::Proved);
+  EXPECT_EQ(prove_existence(ev, box1(1.0, 1.0, -1.5, 1.5), 1.01, 8, p, ws),
+            Existence::NotProved);
 }
 
 // Random boxes of q^2 = x: the exact roots decide what each outcome may be.

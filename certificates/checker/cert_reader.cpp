@@ -1,7 +1,6 @@
 // cert_reader.cpp — the lexical layer of the certificate: reads the file line by line with
 // getline(3), feeds every byte to a SHA-256 context, and refuses anything that is not
-// exactly in the canonical form of FORMAT.md. Reals follow the exact grammar of glibc's %a output,
-// which rejects decimal numbers, redundant zeros, upper case, infinities and NaNs.
+// exactly in the canonical form of FORMAT.md.
 #include "cert_reader.h"
 
 #include <cmath>
@@ -45,7 +44,7 @@ LineReader::~LineReader() {
   std::free(line_buf_);
 }
 
-const std::vector<std::string_view>& LineReader::next() {
+LineReader& LineReader::next() {
   ssize_t n = getline(&line_buf_, &line_cap_, f_);
   ++line_;
   if (n <= 0) malformed(line_, "unexpected end of file");
@@ -65,7 +64,8 @@ const std::vector<std::string_view>& LineReader::next() {
     fields_.emplace_back(line_buf_ + start, i - start);
     start = i + 1;
   }
-  return fields_;
+  pos_ = 1;
+  return *this;
 }
 
 std::string LineReader::raw(size_t n) {
@@ -111,63 +111,62 @@ int64_t parse_int(std::string_view s, long rec) {
   return i ? -v : v;
 }
 
-// The value of a lowercase hexadecimal digit, or -1.
-static int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
+// A real is exactly what glibc's printf("%a") prints for a finite double (FORMAT.md): no
+// decimal form, no redundant zero, no upper case, no infinity or NaN. strtod reads a
+// hexadecimal float exactly, and printing its value back must give the field unchanged.
+static double parse_real(std::string_view s, long rec) {
+  const std::string field(s);
+  const double v = std::strtod(field.c_str(), nullptr);
+  char back[64];
+  std::snprintf(back, sizeof back, "%a", v);
+  if (!std::isfinite(v) || field != back)
+    malformed(rec, "bad real '" + field + "' (expected a %a hexadecimal float)");
+  return v;
 }
 
-// The grammar of glibc's printf("%a") for a finite double: -?0x1(.H*[1-f])?p[+-]E for a
-// normal number (E in 0..1023 with no leading zero), 0x0.H*[1-f]p-1022 for a subnormal,
-// 0x0p+0 for zero. Anything else (decimal, upper case, trailing zeros, inf, nan) is
-// malformed. The value mantissa·2^(exponent − 4·digits) is exact in binary64.
-double parse_real(std::string_view s, long rec) {
-  const size_t i = s[0] == '-' ? 1 : 0;
-  bool ok = s.size() >= i + 6 && s.substr(i, 2) == "0x" && (s[i + 2] == '0' || s[i + 2] == '1');
-  const int lead = ok ? s[i + 2] - '0' : 0;
-  int digits = 0;
-  uint64_t mant = uint64_t(lead);
-  size_t k = i + 3;
-  if (ok && s[k] == '.') {
-    for (++k; k < s.size() && hex_digit(s[k]) >= 0; ++k) {
-      mant = mant * 16 + uint64_t(hex_digit(s[k]));
-      ++digits;
-    }
-    ok = digits >= 1 && digits <= 13 && s[k - 1] != '0';
-  }
-  ok = ok && k + 2 < s.size() && s[k] == 'p' && (s[k + 1] == '+' || s[k + 1] == '-');
-  std::string_view e = ok ? s.substr(k + 2) : std::string_view();
-  ok = ok && !e.empty() && e.size() <= 4 && !(e[0] == '0' && e.size() > 1) &&
-       e.find_first_not_of("0123456789") == std::string_view::npos;
-  const int sign = ok && s[k + 1] == '-' ? -1 : 1;  // s[k + 1] exists only when ok
-  const int exp = ok ? std::atoi(std::string(e).c_str()) * sign : 0;
-  if (ok && lead == 1) ok = exp >= -1022 && exp <= 1023;
-  if (ok && lead == 0) ok = digits ? exp == -1022 : (exp == 0 && s[k + 1] == '+');
-  if (!ok) malformed(rec, "bad real '" + std::string(s) + "' (expected a %a hexadecimal float)");
-  double v = std::ldexp(double(mant), exp - 4 * digits);
-  return i ? -v : v;
-}
-
-const std::vector<std::string_view>& LineReader::expect(const std::vector<const char*>& words,
-                                                       size_t extra) {
+LineReader& LineReader::expect(const std::vector<const char*>& words, size_t extra) {
   next();
   return require(words, extra);
 }
 
-const std::vector<std::string_view>& LineReader::require(const std::vector<const char*>& words,
-                                                        size_t extra) {
-  const std::vector<std::string_view>& f = fields_;
-  bool ok = f.size() == words.size() + extra;
-  for (size_t i = 0; ok && i < words.size(); ++i) ok = f[i] == words[i];
+LineReader& LineReader::require(const std::vector<const char*>& words, size_t extra) {
+  bool ok = fields_.size() == words.size() + extra;
+  for (size_t i = 0; ok && i < words.size(); ++i) ok = fields_[i] == words[i];
   if (!ok) {
     std::string want;
     for (auto w : words) want += std::string(want.empty() ? "" : " ") + w;
     const std::string wanted = "expected '" + want + "' and " + std::to_string(extra);
-    const std::string found = "found '" + std::string(f[0]) + "' with " + std::to_string(f.size());
+    const std::string found = "found '" + std::string(kind()) + "' with " + std::to_string(size());
     malformed(line_, wanted + " field(s), " + found + " field(s)");
   }
-  return f;
+  pos_ = words.size();
+  return *this;
+}
+
+void LineReader::count(size_t k) {
+  if (size() != k) malformed(line_, std::string(kind()) + " record: wrong number of fields");
+}
+
+std::string_view LineReader::word() {
+  if (pos_ >= size()) malformed(line_, std::string(kind()) + " record: too few fields");
+  return fields_[pos_++];
+}
+
+int64_t LineReader::integer() { return parse_int(word(), line_); }
+
+double LineReader::real() { return parse_real(word(), line_); }
+
+std::vector<double> LineReader::reals(size_t k) {
+  std::vector<double> out(k);
+  for (double& x : out) x = real();
+  return out;
+}
+
+std::vector<double> LineReader::intervals(size_t k) {
+  std::vector<double> out = reals(2 * k);
+  for (size_t j = 0; j < k; ++j)
+    if (!(out[2 * j] <= out[2 * j + 1])) malformed(line_, "interval with LO > HI");
+  return out;
 }
 
 }  // namespace cc

@@ -33,19 +33,27 @@ class LineReader {
   explicit LineReader(FILE* f);  // takes ownership of f
   ~LineReader();
   // Reads the next record and splits it into fields; checks the lexical rules.
-  const std::vector<std::string_view>& next();
+  LineReader& next();
   // next(), then requires the leading fields == words and `extra` further fields.
-  const std::vector<std::string_view>& expect(const std::vector<const char*>& words,
-                                              size_t extra);
+  LineReader& expect(const std::vector<const char*>& words, size_t extra);
   // The same test on the record read last.
-  const std::vector<std::string_view>& require(const std::vector<const char*>& words,
-                                               size_t extra);
+  LineReader& require(const std::vector<const char*>& words, size_t extra);
+  void count(size_t k);  // the record read last has k fields
+  std::string_view kind() const { return fields_[0]; }
+  size_t size() const { return fields_.size(); }
+  // The fields of the record read last, left to right after its leading words.
+  std::string_view word();
+  int64_t integer();
+  double real();
+  std::vector<double> reals(size_t k);
+  // k intervals LO HI (2k reals, all parsed before any LO <= HI is checked).
+  std::vector<double> intervals(size_t k);
   // Reads exactly `n` raw bytes (the embedded model text) and counts its lines.
   std::string raw(size_t n);
-  void expect_eof();           // nothing may follow the last record
-  long record() const { return line_; }  // number of the record read last
+  void expect_eof();                         // nothing may follow the last record
+  long record() const { return line_; }      // number of the record read last
   uint64_t bytes() const { return bytes_; }  // bytes read so far
-  std::string file_sha256();   // after expect_eof
+  std::string file_sha256();                 // after expect_eof
 
  private:
   FILE* f_ = nullptr;
@@ -55,6 +63,7 @@ class LineReader {
   long line_ = 0;
   uint64_t bytes_ = 0;
   std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
+  size_t pos_ = 0;                        // the next field word() returns
 };
 
 struct CheckOptions {
@@ -80,8 +89,7 @@ enum Exit { kVerified = 0, kRejected = 1, kMalformed = 2, kUserFactors = 3 };
 // exit status, with what it found in `out`.
 int check_certificate(FILE* f, const CheckOptions& o, Verdict& out);
 
-// Field parsers; `rec` is the record number used in error messages.
+// A canonical decimal integer (FORMAT.md); `rec` is the record named in the error.
 int64_t parse_int(std::string_view s, long rec);
-double parse_real(std::string_view s, long rec);
 
 }  // namespace cc

@@ -1,10 +1,6 @@
-// eval.cpp — MPFI semantics of every node of the model language. Forward evaluation
-// reports, per node, whether the function is defined on the whole input (status 0), on
-// part of it (1: the value encloses the defined part; also used for unbounded or NaN
-// results, which become the entire line), or nowhere (2). Proof mode accepts only 0;
-// Refute mode fails only on 2, because a point where f is undefined is not a solution.
-// Derivatives are forward-mode interval AD; HC4 backward steps intersect each child with
-// a superset of its values compatible with the parent (a solution is never removed).
+// eval.cpp — MPFI semantics of every node of the model language (statuses and modes in
+// eval.h). Unbounded or NaN results become the entire line with status 1. HC4 backward
+// steps intersect each child with a superset of its values compatible with the parent.
 #include "eval.h"
 
 #include <algorithm>
@@ -76,11 +72,14 @@ bool Evaluator::constant(int id, Ival& out) const {
 }
 
 void Evaluator::power(Ival& r, const Ival& a, int k) {
-  unsigned long m = (unsigned long)(k < 0 ? -k : k);
-  if (m == 0) return (void)mpfi_set_si(r, 1);
+  const unsigned long m = (unsigned long)(k < 0 ? -k : k);
+  if (m == 0) {
+    mpfi_set_si(r, 1);
+    return;
+  }
   // x^m is monotone in |x| (m even) or in x (m odd): power the ends with directed rounding.
+  mpfi_set(t4_, a);
   if (m % 2 == 0) mpfi_abs(t4_, a);
-  else mpfi_set(t4_, a);
   mpfr_pow_ui(r.L(), t4_.L(), m, MPFR_RNDD);
   mpfr_pow_ui(r.R(), t4_.R(), m, MPFR_RNDU);
   if (k < 0) mpfi_inv(r, r);  // callers guarantee 0 is not in a
@@ -107,7 +106,8 @@ void Evaluator::extremum(Ival& v, const Ival& a, double off, double lo, double h
 // its ternary value says on which side of the exact value each result lies, so the
 // result and its neighbour enclose it. Wide or huge arguments go to MPFI.
 void Evaluator::sincos(const Ival& a, Ival& s, Ival& c) {
-  double lo = a.lo(), hi = a.hi();
+  const double lo = a.lo();
+  const double hi = a.hi();
   if (!(hi - lo < 6.0) || !(std::fabs(lo) < 1e6) || !(std::fabs(hi) < 1e6)) {
     mpfi_sin(s, a);
     mpfi_cos(c, a);
@@ -213,8 +213,9 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
     case Op::Abs: mpfi_abs(r, *a); break;
     case Op::Atan: mpfi_atan(r, *a); break;
   }
-  if (mpfi_nan_p(r)) return r.entire(), 1;
-  return st == 0 && !r.bounded() ? 1 : st;
+  if (mpfi_nan_p(r)) r.entire();
+  if (!r.bounded()) return 1;
+  return st;
 }
 
 // A node's status is the worst of its children's and its own; undefined children make it
@@ -355,7 +356,8 @@ bool Evaluator::derive(int id) {
       mpfi_sub(t1_, A[v], t1_);
       mpfi_div(d, t1_, b);
     } else {  // min/max: differentiable only where one argument is certainly smaller
-      bool a_less = mpfr_less_p(a.R(), b.L()), b_less = mpfr_less_p(b.R(), a.L());
+      const bool a_less = mpfr_less_p(a.R(), b.L());
+      const bool b_less = mpfr_less_p(b.R(), a.L());
       if (!a_less && !b_less) return false;
       mpfi_set(d, (a_less == (n.op == Op::Min)) ? A[v] : B[v]);
     }
@@ -383,11 +385,10 @@ bool Evaluator::hull_both(Ival& a, const Ival& s) {
   mpfi_intersect(t2_, a, s);
   mpfi_neg(t3_, s);
   mpfi_intersect(t3_, a, t3_);
-  bool e2 = t2_.empty(), e3 = t3_.empty();
-  if (e2 && e3) return false;
-  if (e2) mpfi_set(a, t3_);
-  else if (e3) mpfi_set(a, t2_);
-  else mpfi_union(a, t2_, t3_);
+  if (t2_.empty() && t3_.empty()) return false;
+  if (t2_.empty()) mpfi_set(a, t3_);
+  if (t3_.empty()) mpfi_set(a, t2_);
+  if (!t2_.empty() && !t3_.empty()) mpfi_union(a, t2_, t3_);
   return true;
 }
 
@@ -520,7 +521,8 @@ void Evaluator::branch_inverse(Op op, mpfr_srcptr y, int s, double c, Ival& out)
 // starts at an extremum of value (−1)^j, so the function decreases on it iff j is even.
 // Returns false (nothing done) when a is not provably inside one branch.
 bool Evaluator::monotone_projection(Op op, const Ival& r, Ival& a, const Ival& fa) {
-  const double PI = 3.141592653589793, off = op == Op::Sin ? 0.5 : 0.0;
+  const double PI = 3.141592653589793;
+  const double off = op == Op::Sin ? 0.5 : 0.0;
   double j = std::floor(0.5 * (a.lo() + a.hi()) / PI - off);
   mpfi_mul_d(t3_, pi_, j + off);
   if (mpfr_cmp(t3_.R(), a.L()) > 0) return false;
@@ -548,7 +550,8 @@ bool Evaluator::project_general(Op op, const Ival& r, Ival& a) {
   if (op == Op::Sin) mpfi_asin(t1_, r);
   else mpfi_acos(t1_, r);
   const double P = 6.283185307179586;
-  double kmin = std::floor(a.lo() / P) - 2, kmax = std::floor(a.hi() / P) + 2;
+  const double kmin = std::floor(a.lo() / P) - 2;
+  const double kmax = std::floor(a.hi() / P) + 2;
   if (kmax - kmin > 10) return true;  // spans many periods: nothing to gain
   bool any = false;
   for (double k = kmin; k <= kmax; ++k)

@@ -1,9 +1,6 @@
 // eval.h — interval evaluation of the model's expression DAG in MPFI: natural forward
-// evaluation in two modes (Proof: everything must be defined and finite on the whole box;
-// Refute: partially defined functions are evaluated on the part of the box where they are
-// defined), the three-valued truth of the constraints (FORMAT.md, "Constraints"),
-// forward-mode interval automatic differentiation for the Jacobians, and HC4-Revise (forward
-// evaluation, then backward projections that never remove a solution).
+// evaluation, the three-valued truth of the constraints (FORMAT.md, "Constraints"),
+// forward-mode interval AD for the Jacobians, and HC4-Revise.
 #pragma once
 
 #include <vector>
@@ -45,15 +42,15 @@ class Evaluator {
   std::vector<int> all_eqs, all_atoms;           // program of every equation, of every atom
   std::vector<std::vector<int>> eq_prog, factor_prog;
   Ival two_pi;
-  // Node evaluations (forward, derivative, backward) so far. Past `work_limit`, eval(),
-  // eval_ad() and hc4() throw WorkLimit: one refutation may bisect 4096 boxes of a model of
-  // 10^5 nodes, so without a limit a small hostile certificate keeps the checker busy for
-  // days. main.cpp lets the limit grow with the bytes read.
-  uint64_t work = 0, work_limit = UINT64_MAX;
+  // Node evaluations (forward, derivative, backward) so far; past `work_limit` (set by
+  // main.cpp from the bytes read), eval(), eval_ad() and hc4() throw WorkLimit.
+  uint64_t work = 0;
+  uint64_t work_limit = UINT64_MAX;
 
  private:
   void charge(size_t nodes) {
-    if ((work += nodes) > work_limit)
+    work += nodes;
+    if (work > work_limit)
       throw WorkLimit("the check needs more work than the checker allows for its size");
   }
   int apply(int id, Ival& r, const Ival* a, const Ival* b);

@@ -20,7 +20,7 @@ struct UnionFind {
 
 // Output boxes kept compactly as doubles, with their verified factor signs.
 struct OutBoxes {
-  int nv = 0, p = 0;
+  int nv = 0;
   std::vector<double> lohi;    // 2·nv per box
   std::vector<uint32_t> pos, neg;  // bit i: factor i verified > 0 (resp. < 0)
   std::vector<uint8_t> solution;

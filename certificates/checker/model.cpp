@@ -12,7 +12,7 @@
 // 2π shifts of links and of the neighbourhood graph are sound).
 #include "model.h"
 
-#include <gmp.h>
+#include <gmpxx.h>
 
 #include <algorithm>
 #include <cctype>
@@ -226,7 +226,8 @@ class Parser {
     Parser& p;
     int k;
     explicit Depth(Parser& q, int step = 1) : p(q), k(step) {
-      if ((p.depth_ += k) > 200) p.bad(p.peek(), "expression nested too deeply");
+      p.depth_ += k;
+      if (p.depth_ > 200) p.bad(p.peek(), "expression nested too deeply");
     }
     ~Depth() { p.depth_ -= k; }
   };
@@ -270,7 +271,8 @@ class Parser {
     if (!relation(peek()))
       bad(peek(), "expected a comparison ('>=', '>', '<=' or '<'), found '" + peek().text + "'");
     const std::string rel = t_[p_++].text;
-    int rhs = expr(), g = rel[0] == '>' ? add(Op::Sub, lhs, rhs) : add(Op::Sub, rhs, lhs);
+    const int rhs = expr();
+    const int g = rel[0] == '>' ? add(Op::Sub, lhs, rhs) : add(Op::Sub, rhs, lhs);
     if (!m_.nodes[g].dep) bad(at, "comparison does not depend on any variable");
     m_.atoms.push_back(g);
     m_.formulas.push_back({Formula::Atom, rel.size() == 1, g, {}});
@@ -406,57 +408,36 @@ namespace {
 
 // a·π + b with exact rationals; `ok` false when the node is not of that form (or too big).
 struct Affine {
-  mpq_t a, b;
+  mpq_class a, b;
   bool ok = false;
-  Affine() {
-    mpq_init(a);
-    mpq_init(b);
-  }
-  ~Affine() {
-    mpq_clear(a);
-    mpq_clear(b);
-  }
-  Affine(const Affine&) = delete;
-  Affine& operator=(const Affine&) = delete;
 };
 
 // The exact value of a decimal literal (digits, optional '.', optional e[+-]digits).
-bool literal_value(const std::string& s, mpq_t out) {
-  size_t e = s.find_first_of("eE");
-  std::string digits, frac_part;
-  long frac = 0, exp10 = 0;
-  for (size_t i = 0; i < std::min(e, s.size()); ++i) {
-    if (s[i] == '.') continue;
-    digits += s[i];
-    frac += s.find('.') < i;  // a digit after the point
+bool literal_value(const std::string& s, mpq_class& out) {
+  const size_t e = std::min(s.find_first_of("eE"), s.size());
+  const size_t point = std::min(s.find('.'), e);
+  std::string digits = s.substr(0, point);
+  long exp10 = 0;
+  if (point < e) {
+    digits += s.substr(point + 1, e - point - 1);
+    exp10 = -long(e - point - 1);
   }
-  if (e != std::string::npos) {
-    std::string x = s.substr(e + 1);
+  if (e < s.size()) {
+    const std::string x = s.substr(e + 1);
     if (x.size() > 7) return false;  // |exponent| < 10^6: the rational stays small
-    exp10 = std::stol(x);
+    exp10 += std::stol(x);
   }
-  long p = exp10 - frac;
-  if (p > 10000 || p < -10000 || digits.size() > 10000) return false;
-  mpz_t ten;
-  mpz_init(ten);
-  mpz_ui_pow_ui(ten, 10, (unsigned long)(p < 0 ? -p : p));
-  mpq_set_str(out, digits.c_str(), 10);
-  mpq_canonicalize(out);
-  if (p >= 0) mpz_mul(mpq_numref(out), mpq_numref(out), ten);
-  else mpz_mul(mpq_denref(out), mpq_denref(out), ten);
-  mpq_canonicalize(out);
-  mpz_clear(ten);
+  if (exp10 > 10000 || exp10 < -10000 || digits.size() > 10000) return false;
+  mpz_class ten;
+  mpz_ui_pow_ui(ten.get_mpz_t(), 10, (unsigned long)std::labs(exp10));
+  out = mpz_class(digits, 10);
+  if (exp10 >= 0) out *= ten;
+  if (exp10 < 0) out /= ten;
   return true;
 }
 
-size_t bits(const mpq_t q) {  // the size of a rational, for the memory budget
-  return mpz_sizeinbase(mpq_numref(q), 2) + mpz_sizeinbase(mpq_denref(q), 2);
-}
-
-// r := x / q, q a nonzero rational.
-void scale_div(Affine& r, const Affine& x, const mpq_t q) {
-  mpq_div(r.a, x.a, q);
-  mpq_div(r.b, x.b, q);
+size_t bits(const mpq_class& q) {  // the size of a rational, for the memory budget
+  return mpz_sizeinbase(q.get_num_mpz_t(), 2) + mpz_sizeinbase(q.get_den_mpz_t(), 2);
 }
 
 }  // namespace
@@ -467,7 +448,8 @@ bool exactly_one_period(const Model& m, const Var& v) {
   // model must not exhaust memory); beyond that the domain is refused.
   const int top = std::max(v.lo, v.hi);
   std::vector<char> need(size_t(top) + 1, 0);
-  need[v.lo] = need[v.hi] = 1;
+  need[v.lo] = 1;
+  need[v.hi] = 1;
   for (int id = top; id >= 0; --id) {
     const Node& n = m.nodes[id];
     if (need[id] && n.a >= 0) need[n.a] = 1;
@@ -485,47 +467,40 @@ bool exactly_one_period(const Model& m, const Var& v) {
     r.ok = true;
     switch (n.op) {
       case Op::Const: r.ok = literal_value(m.literals[n.k], r.b); break;
-      case Op::Pi: mpq_set_ui(r.a, 1, 1); break;
+      case Op::Pi: r.a = 1; break;
       case Op::Add:
-        mpq_add(r.a, x->a, y->a);
-        mpq_add(r.b, x->b, y->b);
+        r.a = x->a + y->a;
+        r.b = x->b + y->b;
         break;
       case Op::Sub:
-        mpq_sub(r.a, x->a, y->a);
-        mpq_sub(r.b, x->b, y->b);
+        r.a = x->a - y->a;
+        r.b = x->b - y->b;
         break;
       case Op::Neg:
-        mpq_neg(r.a, x->a);
-        mpq_neg(r.b, x->b);
+        r.a = -x->a;
+        r.b = -x->b;
         break;
       case Op::Mul:  // one factor must be rational (no π²)
-        if (mpq_sgn(y->a) == 0) {
-          mpq_mul(r.a, x->a, y->b);
-          mpq_mul(r.b, x->b, y->b);
-        } else if (mpq_sgn(x->a) == 0) {
-          mpq_mul(r.a, y->a, x->b);
-          mpq_mul(r.b, y->b, x->b);
-        } else {
-          r.ok = false;
-        }
+        r.ok = x->a == 0 || y->a == 0;
+        r.a = x->a * y->b + y->a * x->b;
+        r.b = x->b * y->b;
         break;
       case Op::Div:  // by a nonzero rational only
-        if (mpq_sgn(y->a) != 0 || mpq_sgn(y->b) == 0) r.ok = false;
-        else
-          scale_div(r, *x, y->b);
+        r.ok = y->a == 0 && y->b != 0;
+        if (r.ok) {
+          r.a = x->a / y->b;
+          r.b = x->b / y->b;
+        }
         break;
       default: r.ok = false;
     }
-    size_t used = r.ok ? bits(r.a) + bits(r.b) : 0;
+    const size_t used = r.ok ? bits(r.a) + bits(r.b) : 0;
     if (used > budget) return false;
     budget -= used;
   }
-  const Affine &lo = val[v.lo], &hi = val[v.hi];
-  if (!lo.ok || !hi.ok) return false;
-  Affine w;
-  mpq_sub(w.a, hi.a, lo.a);
-  mpq_sub(w.b, hi.b, lo.b);
-  return mpq_cmp_ui(w.a, 2, 1) == 0 && mpq_sgn(w.b) == 0;
+  const Affine& lo = val[v.lo];
+  const Affine& hi = val[v.hi];
+  return lo.ok && hi.ok && hi.a - lo.a == 2 && hi.b == lo.b;
 }
 
 }  // namespace cc

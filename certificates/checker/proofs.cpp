@@ -108,51 +108,64 @@ void Prover::rhs(const double* C) {
   for (int i = 0; i < n_; ++i) dot(b_[i], C + i * n_, f.data());
 }
 
+// Row i of Gauss–Seidel for C·f = 0 on q ∈ X around the centre c (both indexed by command):
+// t1_ := (b_i + Σ_{j≠i} A_ij·(X_j − c_j)) / A_ii.
+void Prover::gs_row(int i, const std::vector<Ival>& X, const std::vector<Ival>& c) {
+  mpfi_set(t1_, b_[i]);
+  for (int j = 0; j < n_; ++j) {
+    if (j == i) continue;
+    mpfi_sub(t2_, X[j], c[j]);
+    mpfi_mul(t2_, t2_, A_[i * n_ + j]);
+    mpfi_add(t1_, t1_, t2_);
+  }
+  mpfi_div(t1_, t1_, A_[i * n_ + i]);
+}
+
+// Jq_ (and Jx_ when `pose`) := the derivatives eval_ad() just computed.
+void Prover::read_jacobians(bool pose) {
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j) {
+      Jq_[i * n_ + j] = ev_.der(m_.eqs[i], m_.command[j]);
+      if (pose) Jx_[i * n_ + j] = ev_.der(m_.eqs[i], m_.pose[j]);
+    }
+}
+
 const char* Prover::newton(const double* Q, const double* C) {
-  const int n = n_;
+  std::vector<Ival> X(n_);
+  std::vector<Ival> c(n_);
   w_ = box;
-  for (int j = 0; j < n; ++j) w_[m_.command[j]].set(Q[2 * j], Q[2 * j + 1]);
+  for (int j = 0; j < n_; ++j) {
+    X[j].set(Q[2 * j], Q[2 * j + 1]);
+    w_[m_.command[j]] = X[j];
+  }
   if (!ev_.eval_ad(ev_.all_eqs, w_.data(), cmd_mask_)) return "Fq is not defined on (x, Q~)";
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) Jq_[i * n + j] = ev_.der(m_.eqs[i], m_.command[j]);
+  read_jacobians(false);
   product(Jq_, C, A_);
   // q̌: the binary64 midpoint of Q~, clamped into it (any point of Q~ is sound).
-  std::vector<double> qc(n);
-  for (int j = 0; j < n; ++j) {
+  for (int j = 0; j < n_; ++j) {
     const double lo = Q[2 * j];
     const double hi = Q[2 * j + 1];
-    qc[j] = std::min(std::max(lo + 0.5 * (hi - lo), lo), hi);
-    w_[m_.command[j]].set(qc[j], qc[j]);
+    const double mid = std::min(std::max(lo + 0.5 * (hi - lo), lo), hi);
+    c[j].set(mid, mid);
+    w_[m_.command[j]] = c[j];
   }
   if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return "f is not defined at (x, q-check)";
   rhs(C);
-  // Gauss–Seidel in command order; components j < i are intersected with Q~_j before use.
-  for (int i = 0; i < n; ++i) {
-    const Ival& aii = A_[i * n + i];
+  // In command order; row i uses X_j = Q~_j ∩ y_j for j < i.
+  for (int i = 0; i < n_; ++i) {
+    const Ival& aii = A_[i * n_ + i];
     if (aii.has_zero() || !aii.bounded()) return "a diagonal entry of C*Fq contains 0";
-    mpfi_set(t1_, b_[i]);
-    for (int j = 0; j < n; ++j) {
-      if (j == i) continue;
-      t2_.set(Q[2 * j], Q[2 * j + 1]);
-      if (j < i && !t2_.meet(y[j])) return "Gauss-Seidel step left Q~";
-      mpfi_sub_d(t2_, t2_, qc[j]);
-      mpfi_mul(t2_, t2_, A_[i * n + j]);
-      mpfi_add(t1_, t1_, t2_);
-    }
-    mpfi_div(t1_, t1_, aii);
-    mpfi_d_sub(y[i], qc[i], t1_);
+    gs_row(i, X, c);
+    mpfi_sub(y[i], c[i], t1_);
     if (!y[i].bounded() || y[i].empty()) return "Hansen-Sengupta image is unbounded";
+    if (!X[i].meet(y[i])) return "Gauss-Seidel step left Q~";
   }
   return nullptr;
 }
 
 bool Prover::jacobians() {
   if (!ev_.eval_ad(ev_.all_eqs, box.data(), all_mask_)) return false;
-  for (int i = 0; i < n_; ++i)
-    for (int j = 0; j < n_; ++j) {
-      Jx_[i * n_ + j] = ev_.der(m_.eqs[i], m_.pose[j]);
-      Jq_[i * n_ + j] = ev_.der(m_.eqs[i], m_.command[j]);
-    }
+  read_jacobians(true);
   return true;
 }
 
@@ -201,40 +214,31 @@ bool Prover::factor(const Factor& f, bool jac, Ival& out) {
 // Hansen–Sengupta contraction of the commands of b (x an interval parameter), with the
 // checker's own preconditioner. −1: no solution in b; 0: not applicable; 1: applied.
 int Prover::hs_contract(std::vector<Ival>& b) {
-  const int n = n_;
   if (!ev_.eval_ad(ev_.all_eqs, b.data(), cmd_mask_)) return 0;  // f must be C¹ on b
-  std::vector<double> M(size_t(n) * n), C;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      Jq_[i * n + j] = ev_.der(m_.eqs[i], m_.command[j]);
-      M[i * n + j] = 0.5 * (Jq_[i * n + j].lo() + Jq_[i * n + j].hi());
-    }
-  if (!invert(M, n, C)) return 0;
+  read_jacobians(false);
+  std::vector<double> M(size_t(n_) * n_);
+  std::vector<double> C;
+  for (size_t k = 0; k < M.size(); ++k) M[k] = 0.5 * (Jq_[k].lo() + Jq_[k].hi());
+  if (!invert(M, n_, C)) return 0;
   product(Jq_, C.data(), A_);
-  std::vector<Ival> qc(n);
+  std::vector<Ival> X(n_);
+  std::vector<Ival> c(n_);
   w_ = b;
-  for (int j = 0; j < n; ++j) {  // the centre: the MPFR midpoint, a point of b
-    mpfi_mid(qc[j].L(), b[m_.command[j]]);
-    mpfr_set(qc[j].R(), qc[j].L(), MPFR_RNDN);
-    w_[m_.command[j]] = qc[j];
+  for (int j = 0; j < n_; ++j) {  // the centre: the MPFR midpoint, a point of b
+    X[j] = b[m_.command[j]];
+    mpfi_mid(c[j].L(), X[j]);
+    mpfr_set(c[j].R(), c[j].L(), MPFR_RNDN);
+    w_[m_.command[j]] = c[j];
   }
   if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return 0;
   rhs(C.data());
-  for (int i = 0; i < n; ++i) {
-    const Ival& aii = A_[i * n + i];
-    if (aii.has_zero()) continue;
-    mpfi_set(t1_, b_[i]);
-    for (int j = 0; j < n; ++j) {
-      if (j == i) continue;
-      mpfi_sub(t2_, b[m_.command[j]], qc[j]);
-      mpfi_mul(t2_, t2_, A_[i * n + j]);
-      mpfi_add(t1_, t1_, t2_);
-    }
-    mpfi_div(t1_, t1_, aii);
-    mpfi_sub(t2_, qc[i], t1_);
-    if (mpfi_nan_p(t2_)) continue;
-    if (!b[m_.command[i]].meet(t2_)) return -1;
+  for (int i = 0; i < n_; ++i) {
+    if (A_[i * n_ + i].has_zero()) continue;
+    gs_row(i, X, c);
+    mpfi_sub(t2_, c[i], t1_);
+    if (!mpfi_nan_p(t2_) && !X[i].meet(t2_)) return -1;
   }
+  for (int j = 0; j < n_; ++j) b[m_.command[j]] = X[j];
   return 1;
 }
 
@@ -287,12 +291,10 @@ bool Prover::refute_rec(std::vector<Ival>& b, int depth, int& budget) {
   }
   if (!(best > 0)) return false;
   std::vector<Ival> c = b;
-  mpfr_t mid;
-  mpfr_init2(mid, mpfi_get_prec(b[v]));
-  mpfi_mid(mid, b[v]);
-  mpfr_set(b[v].R(), mid, MPFR_RNDU);
-  mpfr_set(c[v].L(), mid, MPFR_RNDD);
-  mpfr_clear(mid);
+  Ival mid;
+  mpfi_mid(mid.L(), b[v]);
+  mpfr_set(b[v].R(), mid.L(), MPFR_RNDU);
+  mpfr_set(c[v].L(), mid.L(), MPFR_RNDD);
   budget -= 2;
   return refute_rec(b, depth + 1, budget) && refute_rec(c, depth + 1, budget);
 }

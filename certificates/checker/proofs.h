@@ -45,6 +45,8 @@ class Prover {
   bool refute_rec(std::vector<Ival>& b, int depth, int& budget);
   void product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out);
   void rhs(const double* C);
+  void gs_row(int i, const std::vector<Ival>& X, const std::vector<Ival>& c);
+  void read_jacobians(bool pose);
   void dot(Ival& out, const double* C, const Ival* const* x);
 
   Evaluator& ev_;
