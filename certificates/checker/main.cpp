@@ -345,8 +345,9 @@ void Checker::bisection(Box& cell, std::vector<Box>& stack) {
 }
 
 // X: the cell holds no feasible solution. The checker runs its whole refutation procedure
-// whatever the hint says, so the hint is a label: checked for its form (hs, eq<i>, c<k>,
-// canonical indices), never interpreted (FORMAT.md, "X <HINT>").
+// whatever the hint says, so the hint is a label: its form (hs, eq<i>, c<k>, canonical
+// indices) is checked, and the equation or constraint it names must exist (FORMAT.md,
+// "X <HINT>").
 void Checker::discard(const Box& cell) {
   rd.count(2);
   const std::string_view h = rd.word();
@@ -354,7 +355,9 @@ void Checker::discard(const Box& cell) {
   if (h.compare(0, 2, "eq") == 0) digits = 2;
   if (h[0] == 'c') digits = 1;
   const bool indexed = digits > 0 && h.size() > digits;
-  if (h != "hs" && (!indexed || parse_int(h.substr(digits), rec()) < 0))
+  const long i = indexed ? parse_int(h.substr(digits), rec()) : -1;
+  const long named = digits == 2 ? m.n() : long(m.constraints.size());
+  if (h != "hs" && (i < 0 || i >= named))
     malformed(rec(), "bad hint '" + std::string(h) + "'");
   if (!refutes(cell)) reject("cannot refute the discarded cell" + show(cell));
 }

@@ -349,7 +349,7 @@ def line_certs():
         "P 1 %s %s" % (hx(0.0), hx(0.5625)),
         "S 0 +- %s %s %s %s %s %s %s" % (hx(-0.0625), hx(0.625), hx(0.0), hx(0.5), hx(-1.0), hx(1.0), hx(-1.0)),
         "B 1 " + hx(0.25),
-        "X eq1",
+        "X eq0",
         "P 1 %s %s" % (hx(0.4375), hx(1.0)),
         "S 1 +- %s %s %s %s %s %s %s" % (hx(0.4375), hx(1.0625), hx(0.5), hx(1.0), hx(-1.0), hx(1.0), hx(-1.0)),
         "end-tree 2",
@@ -437,11 +437,12 @@ def main():
     })
     malformed = {
         "decimal_real": base.replace("B 0 " + hx(0.5), "B 0 0.5"),
-        "double_space": base.replace("X eq1", "X  eq1"),
+        "double_space": base.replace("X eq0", "X  eq0"),
         "wrong_version": base.replace("aspects-certificate 1", "aspects-certificate 3"),
         "truncated": base[: len(base) // 2],
         "after_end": base + "garbage\n",
-        "unknown_record": base.replace("X eq1", "Z eq1"),
+        "unknown_record": base.replace("X eq0", "Z eq0"),
+        "hint_names_no_equation": base.replace("X eq0", "X eq1"),
         "constraint_constant_comparison": with_model(lc, "x <= 0.875", "1 <= 0.875"),
         "constraint_bare_periodic": with_model(lc, "q in [0, 1]\nequation x - q", "q in [0, 2*pi] periodic\nequation x - sin(q)"),
         "constraint_dangling_and": with_model(lc, "x <= 0.875", "x <= 0.875 and"),

@@ -19,6 +19,7 @@ still true of the edited model; each case says which). Last, the exit statuses 3
 (UNCHECKED: a bound resting on a user-supplied factor) and the --json verdict.
 """
 import hashlib
+import re
 import json
 import os
 import subprocess
@@ -399,7 +400,12 @@ def mutations_constrained():
         ("discard_c0_of_feasible_cell", lambda c: edit(c, c.find("S")[len(c.find("S")) // 2], "X c0"),
          (1, "discarded cell")),
         ("constraint_changed_not_rehashed", lambda c: constraint_changed(c, ">= 0", ">= 5", False), (1, "SHA-256")),
+        # Without the constraint its discards name no constraint (malformed); relabelled
+        # as Hansen-Sengupta discards, the refutation itself must fail.
         ("constraint_removed_rehashed", lambda c: constraint_changed(c, "constraint", "# constraint"),
+         (2, "bad hint")),
+        ("constraint_removed_rehashed_relabelled",
+         lambda c: re.sub(r"(?m)^X c\d+$", "X hs", constraint_changed(c, "constraint", "# constraint")),
          (1, "discarded cell")),
         ("discard_hint_c0_to_hs", lambda c: c.text().replace("\nX c0\n", "\nX hs\n"), 0),
         ("discard_hint_malformed", lambda c: c.text().replace("\nX c0\n", "\nX c00\n", 1), 2),
