@@ -14,6 +14,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "assembly_witness.h"
 #include "checker_margins.h"
 #include "constraints.h"
 #include "contractor.h"
@@ -387,6 +388,14 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC.
   const WitnessSpace space(model.pose, model.command, periodic);
   out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space);
+  // ... and "one command, two poses" (assembly-mode changes), each proved in x at a point.
+  ModelEvaluator assembly_ev(model);
+  HsWorkspace assembly_ws;
+  auto prove = [&](CommandWitness& w) {
+    return prove_command_witness(assembly_ev, out.boxes, config.tau, w, assembly_ws);
+  };
+  find_command_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space, prove,
+                         out.cuspidal);
   lap("cuspidality");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
