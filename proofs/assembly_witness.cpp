@@ -16,6 +16,15 @@ bool zero_in_box(ModelEvaluator& ev, const BoxStore& R, int b, Box at, double ta
                  std::vector<Interval>& x, std::vector<double>& C, HsWorkspace& ws) {
   const Model& m = ev.model();
   for (int v : m.pose) at[v].set_hull(R.lo(b, v), R.hi(b, v));
+  // Most candidates have no zero in the box: f(X, q*) ∌ 0 says so at the cost of one
+  // evaluation, then one contracting sweep; the others start iteration (9) from the
+  // contracted box.
+  std::vector<Interval> y;
+  if (ev.equations(at, y) != EvalStatus::Defined) return false;
+  for (const Interval& fi : y)
+    if (!fi.contains_zero()) return false;
+  if (hansen_sengupta(ev, at, true, y, ws, true) != HsStatus::Ok) return false;
+  for (size_t j = 0; j < m.pose.size(); ++j) at[m.pose[j]] = y[j];
   ExistenceProof p;
   if (prove_existence(ev, at, tau, 12, p, ws, true) != Existence::Proved) return false;
   for (size_t j = 0; j < m.pose.size(); ++j) {

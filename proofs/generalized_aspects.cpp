@@ -388,6 +388,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC.
   const WitnessSpace space(model.pose, model.command, periodic);
   out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space);
+  lap("cuspidality");
   // ... and "one command, two poses" (assembly-mode changes), each proved in x at a point.
   ModelEvaluator assembly_ev(model);
   HsWorkspace assembly_ws;
@@ -396,7 +397,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   };
   find_command_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space, prove,
                          out.cuspidal);
-  lap("cuspidality");
+  lap("assembly witnesses");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

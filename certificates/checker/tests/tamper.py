@@ -762,8 +762,8 @@ def assembly_cases(check, aspects, work):
     cases = [
         ("prrp_has_none", prrp, lambda c: c.text(), (0, " assembly=0 ")),
         ("without_section_still_read", prrp, lambda c: set_assembly(c, None), (0, " assembly=0 ")),
-        ("double_pose_verified", dp, lambda c: c.text(), (0, " assembly=68 ")),
-        ("complex_square_verified", sq, lambda c: c.text(), (0, " assembly=80 ")),
+        ("double_pose_verified", dp, lambda c: c.text(), (0, " assembly=86 ")),
+        ("complex_square_verified", sq, lambda c: c.text(), (0, " assembly=116 ")),
         ("iterate_moved_to_other_box", dp,
          lambda c: assembly_edit(c, lambda f: f.__setitem__(slice(6, 8), f[9:11])),
          (1, "assembly: the pose is not in the box")),
