@@ -77,7 +77,8 @@ nlohmann::json cuspidal_json(const AspectsResult& r) {
   const CuspidalWitnesses& w = r.cuspidal;
   nlohmann::json per = nlohmann::json::array();
   size_t next = 0;
-  int64_t with_pose = 0, with_command = 0;
+  int64_t with_pose = 0, with_command = 0, capped = 0;
+  for (WitnessSearch s : w.command_search) capped += s == WitnessSearch::Capped;
   for (size_t c = 0; c < w.count.size(); ++c) {
     const int64_t assembly = c < w.command_count.size() ? w.command_count[c] : 0;
     with_pose += w.count[c] > 0;
@@ -100,6 +101,7 @@ nlohmann::json cuspidal_json(const AspectsResult& r) {
           {"csncs_with_witness", with_pose},
           {"assembly_witnesses", w.command.size()},
           {"csncs_with_assembly_witness", with_command},
+          {"csncs_assembly_search_capped", capped},
           {"per_csnc", per}};
 }
 
