@@ -87,24 +87,39 @@ void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& 
   write_file_atomically(path, os.str());
 }
 
-// "One pose, two commands" witnesses (certified in the certificate's cuspidal section):
-// per CSNC with a witness, their count, whether the search listed them all, a few pairs.
+// Cuspidality witnesses (certified in the certificate's cuspidal and assembly sections):
+// per CSNC with a witness of either kind, the counts of (a) "one pose, two commands" and
+// (b) "one command, two poses", whether each search listed them all, a few pairs of (a).
 nlohmann::json cuspidal_json(const AspectsResult& r) {
   const CuspidalWitnesses& w = r.cuspidal;
   nlohmann::json per = nlohmann::json::array();
   size_t next = 0;
+  int64_t with_pose = 0, with_command = 0, capped = 0;
+  for (WitnessSearch s : w.command_search) capped += s == WitnessSearch::Capped;
   for (size_t c = 0; c < w.count.size(); ++c) {
-    if (w.count[c] == 0) continue;
-    while (w.pose[next].csnc != int32_t(c)) ++next;
+    const int64_t assembly = c < w.command_count.size() ? w.command_count[c] : 0;
+    with_pose += w.count[c] > 0;
+    with_command += assembly > 0;
+    if (w.count[c] == 0 && assembly == 0) continue;
     nlohmann::json examples = nlohmann::json::array();
+    while (w.count[c] > 0 && w.pose[next].csnc != int32_t(c)) ++next;
     for (size_t i = next; i < next + std::min<size_t>(3, size_t(w.count[c])); ++i)
       examples.push_back({w.pose[i].a, w.pose[i].b});
-    per.push_back({{"csnc", c},
-                   {"one_pose_two_commands", w.count[c]},
-                   {"search", witness_search_name(w.search[c])},
-                   {"examples", examples}});
+    nlohmann::json e = {{"csnc", c},
+                        {"one_pose_two_commands", w.count[c]},
+                        {"search", witness_search_name(w.search[c])},
+                        {"examples", examples},
+                        {"one_command_two_poses", assembly}};
+    if (c < w.command_search.size())
+      e["assembly_search"] = witness_search_name(w.command_search[c]);
+    per.push_back(e);
   }
-  return {{"witnesses", w.pose.size()}, {"csncs_with_witness", per.size()}, {"per_csnc", per}};
+  return {{"witnesses", w.pose.size()},
+          {"csncs_with_witness", with_pose},
+          {"assembly_witnesses", w.command.size()},
+          {"csncs_with_assembly_witness", with_command},
+          {"csncs_assembly_search_capped", capped},
+          {"per_csnc", per}};
 }
 
 nlohmann::json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r) {
@@ -286,6 +301,8 @@ int run_solve(const SolveOptions& opts) {
                 r.certified_links.size());
     std::printf("CSNCs: %zu, filtered: %d\n", r.csnc_sizes.size(), r.filtered);
     std::printf("separated lower bound on the number of aspects: %d\n", r.separation.lower_bound);
+    std::printf("cuspidality witnesses: %zu one pose/two commands, %zu one command/two poses\n",
+                r.cuspidal.pose.size(), r.cuspidal.command.size());
     std::printf("time: %.3f s\n", r.seconds);
   }
   if (r.complete() && !o.out_dir.empty()) std::remove(checkpoint_path.c_str());  // done with it

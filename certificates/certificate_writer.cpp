@@ -258,6 +258,18 @@ void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
     put("W %d %d %d %s", w.csnc, w.a, w.b, shift.c_str());
     end_line();
   }
+  line("assembly " + std::to_string(r.cuspidal.command.size()));
+  for (const CommandWitness& w : r.cuspidal.command) {
+    std::string shift;
+    for (int v = 0; v < nv; ++v) shift += "-0+"[w.shift(v) + 1];
+    put("V %d %d %d %s", w.csnc, w.a, w.b, shift.c_str());
+    for (double q : w.q) real(q);
+    for (const Interval& x : w.xa) interval(x);
+    for (double c : w.ca) real(c);
+    for (const Interval& x : w.xb) interval(x);
+    for (double c : w.cb) real(c);
+    end_line();
+  }
   line("claim filtered " + std::to_string(r.filtered));
   line("claim lower-bound " + std::to_string(r.separation.lower_bound));
   line("end " + std::to_string(lines_));

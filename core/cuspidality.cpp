@@ -51,14 +51,21 @@ WitnessSpace::WitnessSpace(std::vector<int> p, std::vector<int> c, std::vector<b
   mpfi_mul_ui(two_pi.get(), two_pi.get(), 2);
 }
 
-bool poses_overlap(const BoxStore& R, int a, int b, const std::vector<int>& k,
-                   const WitnessSpace& s) {
+namespace {
+
+// Every variable of `vars`: box b + 2πk meets box a, shifted ends of b rounded inward.
+bool meet(const BoxStore& R, int a, int b, const std::vector<int>& k,
+          const std::vector<int>& vars, const WitnessSpace& s) {
   Interval t;
-  for (int v : s.pose) {
+  for (int v : vars) {
     double blo = R.lo(b, v);
     double bhi = R.hi(b, v);
     if (k[v] != 0) {
       if (!s.periodic[v]) return false;
+      // A filter in double, widened far beyond rounding: most pairs fail it, without MPFI.
+      const double lo = blo + 2 * M_PI * k[v], hi = bhi + 2 * M_PI * k[v];
+      const double slack = 1e-9 * (1 + std::fabs(lo) + std::fabs(hi));
+      if (std::max(R.lo(a, v), lo - slack) > std::min(R.hi(a, v), hi + slack)) return false;
       shifted(t, s.two_pi, k[v], blo);
       blo = t.hi_up();
       shifted(t, s.two_pi, k[v], bhi);
@@ -69,8 +76,9 @@ bool poses_overlap(const BoxStore& R, int a, int b, const std::vector<int>& k,
   return true;
 }
 
-bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s) {
-  for (int v : s.command) {
+// Some variable of `vars` has [a] and [b] + 2πm disjoint for every integer m.
+bool apart(const BoxStore& R, int a, int b, const std::vector<int>& vars, const WitnessSpace& s) {
+  for (int v : vars) {
     const double al = R.lo(a, v), ah = R.hi(a, v), bl = R.lo(b, v), bh = R.hi(b, v);
     if (s.periodic[v] ? disjoint_mod_period(al, ah, bl, bh, s.two_pi) : (ah < bl || bh < al))
       return true;
@@ -78,12 +86,21 @@ bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s) {
   return false;
 }
 
-namespace {
-
-// The witnesses of one CSNC (its boxes in `members`), appended to `out`; returns the
-// outcome of the search.
-WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members, int32_t c,
-                    const WitnessSpace& s, int v0, int64_t cap, std::vector<PoseWitness>& out) {
+// The candidate pairs A < B of one CSNC (its boxes in `members`): B + 2πk meets A on every
+// variable of `meet_vars` (k on periodic ones only), A and B are apart on one variable of
+// `apart_vars`. Each pair is offered to `accept` (with its first fitting k) until it takes
+// it; stops when `accept` has taken `cap` pairs or been offered `offers` (then Capped).
+template <class Accept>
+WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members,
+                    const WitnessSpace& s, const std::vector<int>& meet_vars,
+                    const std::vector<int>& apart_vars, int64_t cap, int64_t offers,
+                    Accept accept) {
+  int v0 = meet_vars[0];  // the sweep coordinate: a non-periodic one when there is one
+  for (int v : meet_vars)
+    if (!s.periodic[v]) {
+      v0 = v;
+      break;
+    }
   std::vector<Entry> e;
   const int copies = s.periodic[v0] ? 1 : 0;
   for (int32_t b : members)
@@ -92,21 +109,21 @@ WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members, int3
       e.push_back({lo - 1e-9 * (1 + std::fabs(lo)), hi + 1e-9 * (1 + std::fabs(hi)), b, k});
     }
   std::sort(e.begin(), e.end(), [](const Entry& x, const Entry& y) { return x.lo < y.lo; });
-  // The other periodic pose variables: their shifts are enumerated (3^m combinations).
+  // The other periodic variables: their shifts are enumerated (3^m combinations).
   std::vector<int> others;
-  for (int v : s.pose)
+  for (int v : meet_vars)
     if (v != v0 && s.periodic[v]) others.push_back(v);
   int combos = 1;
   for (size_t i = 0; i < others.size(); ++i) combos *= 3;
   std::vector<int> k(R.nv(), 0);
-  const size_t first = out.size();
+  int64_t taken = 0, offered = 0;
   for (size_t i = 0; i < e.size(); ++i) {
     for (size_t j = i + 1; j < e.size() && e[j].lo <= e[i].hi; ++j) {
       if (e[i].box == e[j].box) continue;
       const bool i_first = e[i].box < e[j].box;
       const Entry& A = i_first ? e[i] : e[j];
       const Entry& B = i_first ? e[j] : e[i];
-      if (A.k != 0 || !commands_disjoint(R, A.box, B.box, s)) continue;
+      if (A.k != 0 || !apart(R, A.box, B.box, apart_vars, s)) continue;
       for (int combo = 0; combo < combos; ++combo) {
         std::fill(k.begin(), k.end(), 0);
         k[v0] = B.k;
@@ -115,17 +132,45 @@ WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members, int3
           k[v] = code % 3 - 1;
           code /= 3;
         }
-        if (!poses_overlap(R, A.box, B.box, k, s)) continue;
-        out.push_back({c, A.box, B.box, pack_shift(k)});
-        break;
+        if (!meet(R, A.box, B.box, k, meet_vars, s)) continue;
+        ++offered;
+        if (accept(A.box, B.box, k)) {
+          ++taken;
+          break;
+        }
       }
-      if (int64_t(out.size() - first) >= cap) return WitnessSearch::Capped;
+      if (taken >= cap || offered >= offers) return WitnessSearch::Capped;
     }
   }
   return WitnessSearch::Complete;
 }
 
+std::vector<std::vector<int32_t>> members_of(const std::vector<int32_t>& csnc, int csncs) {
+  std::vector<std::vector<int32_t>> members(csncs);
+  for (size_t b = 0; b < csnc.size(); ++b)
+    if (csnc[b] >= 0) members[csnc[b]].push_back(int32_t(b));
+  return members;
+}
+
+// A pair met through two shifts (boxes spanning a period) is kept once.
+template <class W>
+void unique_pairs(std::vector<W>& w, size_t first) {
+  auto lt = [](const W& x, const W& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
+  auto eq = [](const W& x, const W& y) { return x.a == y.a && x.b == y.b; };
+  std::stable_sort(w.begin() + first, w.end(), lt);
+  w.erase(std::unique(w.begin() + first, w.end(), eq), w.end());
+}
+
 }  // namespace
+
+bool poses_overlap(const BoxStore& R, int a, int b, const std::vector<int>& k,
+                   const WitnessSpace& s) {
+  return meet(R, a, b, k, s.pose, s);
+}
+
+bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s) {
+  return apart(R, a, b, s.command, s);
+}
 
 CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc,
                                       int csncs, const WitnessSpace& s, int64_t cap) {
@@ -133,28 +178,44 @@ CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32
   w.count.assign(csncs, 0);
   w.search.assign(csncs, WitnessSearch::Complete);
   if (s.pose.empty() || s.command.empty()) return w;
-  int v0 = s.pose[0];  // the sweep coordinate: a non-periodic one when there is one
-  for (int v : s.pose)
-    if (!s.periodic[v]) {
-      v0 = v;
-      break;
-    }
-  std::vector<std::vector<int32_t>> members(csncs);
-  for (int b = 0; b < R.size(); ++b)
-    if (csnc[b] >= 0) members[csnc[b]].push_back(b);
+  const std::vector<std::vector<int32_t>> members = members_of(csnc, csncs);
   for (int32_t c = 0; c < csncs; ++c) {
     const size_t first = w.pose.size();
-    w.search[c] = sweep(R, members[c], c, s, v0, cap, w.pose);
-    // A pair met through two shifts (boxes spanning a period) is kept once.
-    auto lt = [](const PoseWitness& x, const PoseWitness& y) {
-      return x.a != y.a ? x.a < y.a : x.b < y.b;
+    auto take = [&](int32_t a, int32_t b, const std::vector<int>& k) {
+      w.pose.push_back({c, a, b, pack_shift(k)});
+      return true;
     };
-    auto eq = [](const PoseWitness& x, const PoseWitness& y) { return x.a == y.a && x.b == y.b; };
-    std::stable_sort(w.pose.begin() + first, w.pose.end(), lt);
-    w.pose.erase(std::unique(w.pose.begin() + first, w.pose.end(), eq), w.pose.end());
+    w.search[c] = sweep(R, members[c], s, s.pose, s.command, cap, INT64_MAX, take);
+    unique_pairs(w.pose, first);
     w.count[c] = int64_t(w.pose.size() - first);
   }
   return w;
+}
+
+void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc, int csncs,
+                            const WitnessSpace& s, const ProveCommandWitness& prove,
+                            CuspidalWitnesses& w, int64_t cap, int64_t attempts) {
+  w.command.clear();
+  w.command_count.assign(csncs, 0);
+  w.command_search.assign(csncs, WitnessSearch::Complete);
+  if (s.pose.empty() || s.command.empty()) return;
+  const std::vector<std::vector<int32_t>> members = members_of(csnc, csncs);
+  for (int32_t c = 0; c < csncs; ++c) {
+    const size_t first = w.command.size();
+    auto take = [&](int32_t a, int32_t b, const std::vector<int>& k) {
+      CommandWitness cw;
+      cw.csnc = c;
+      cw.a = a;
+      cw.b = b;
+      cw.shift_code = pack_shift(k);
+      if (!prove(cw)) return false;
+      w.command.push_back(std::move(cw));
+      return true;
+    };
+    w.command_search[c] = sweep(R, members[c], s, s.command, s.pose, cap, attempts, take);
+    unique_pairs(w.command, first);
+    w.command_count[c] = int64_t(w.command.size() - first);
+  }
 }
 
 }  // namespace aspects

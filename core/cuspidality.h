@@ -5,9 +5,16 @@
 // hence in one aspect. The tests are exactly those of check_cert (certificates/FORMAT.md,
 // "Cuspidality witnesses"): shifted ends rounded inward for the overlap, outward for the
 // disjointness. Found by a sort-and-sweep on one pose coordinate within each CSNC.
+//
+// "One command, two poses" (a non-singular assembly-mode change): two solution boxes A < B
+// of one CSNC whose command parts overlap (B shifted by 2πk on periodic commands) and whose
+// pose parts are disjoint (modulo 2π), with, at a point command q* of the overlap, an
+// interval-Newton existence proof in x inside each box (proofs/assembly_witness.h). Found
+// by the same sweep with the roles of x and q swapped; check_cert's V records.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "box_store.h"
@@ -25,10 +32,26 @@ struct PoseWitness {
 enum class WitnessSearch : uint8_t { Complete = 0, Capped = 1 };
 const char* witness_search_name(WitnessSearch s);
 
+// A proved "one command, two poses" witness: f(x, q) = 0 has a zero in xa (inside box a's
+// pose part) and one in xb (inside box b's), both at the command q (model command order),
+// which lies in box a and in box b + 2πk. xa, xb: the Newton iterates (double ends) with
+// H ⊂ int x~; ca, cb: their preconditioners (row major).
+struct CommandWitness {
+  int32_t csnc, a, b;
+  uint32_t shift_code = 0;  // pack_shift, nonzero on periodic commands only
+  std::vector<double> q;
+  std::vector<Interval> xa, xb;
+  std::vector<double> ca, cb;
+  int shift(int v) const { return int((shift_code >> (2 * v)) & 3u) - 1; }
+};
+
 struct CuspidalWitnesses {
   std::vector<PoseWitness> pose;      // sorted by (csnc, a, b), each pair once
   std::vector<int64_t> count;         // per CSNC: witnesses in `pose`
   std::vector<WitnessSearch> search;  // per CSNC
+  std::vector<CommandWitness> command;        // sorted by (csnc, a, b), each pair once
+  std::vector<int64_t> command_count;         // per CSNC: witnesses in `command`
+  std::vector<WitnessSearch> command_search;  // per CSNC
 };
 
 // The variables of a model, and 2π at the working precision (made by the constructor).
@@ -52,5 +75,16 @@ bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s);
 // witnesses per CSNC.
 CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc,
                                       int csncs, const WitnessSpace& s, int64_t cap = 10000);
+
+// Fills q, xa, xb, ca, cb of a candidate (csnc, a, b, shift_code set) and returns true when
+// the existence proofs succeed.
+using ProveCommandWitness = std::function<bool(CommandWitness&)>;
+
+// Candidates: boxes of one CSNC with meeting commands and disjoint poses; the proved ones
+// go to w.command (with the per-CSNC count and search). At most `cap` witnesses and
+// `attempts` proofs per CSNC (then Capped).
+void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc, int csncs,
+                            const WitnessSpace& s, const ProveCommandWitness& prove,
+                            CuspidalWitnesses& w, int64_t cap = 1000, int64_t attempts = 100000);
 
 }  // namespace aspects

@@ -14,6 +14,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "assembly_witness.h"
 #include "checker_margins.h"
 #include "constraints.h"
 #include "contractor.h"
@@ -449,6 +450,15 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   const WitnessSpace space(model.pose, model.command, periodic);
   out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space);
   lap("cuspidality");
+  // ... and "one command, two poses" (assembly-mode changes), each proved in x at a point.
+  ModelEvaluator assembly_ev(model);
+  HsWorkspace assembly_ws;
+  auto prove = [&](CommandWitness& w) {
+    return prove_command_witness(assembly_ev, out.boxes, config.tau, w, assembly_ws);
+  };
+  find_command_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space, prove,
+                         out.cuspidal);
+  lap("assembly witnesses");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -88,7 +88,7 @@ struct AspectsResult {
   std::vector<int32_t> csnc;            // box -> CSNC (decreasing size), -1 for undecided
   std::vector<int64_t> csnc_sizes;
   int filtered = 0;
-  CuspidalWitnesses cuspidal;           // "one pose, two commands" witnesses per CSNC
+  CuspidalWitnesses cuspidal;           // cuspidality witnesses per CSNC (both kinds)
   SeparationResult separation;
   SearchDiagnostics diagnostics;
   long solutions = 0, undecided = 0, discarded = 0, processed = 0;

@@ -9,19 +9,21 @@ namespace aspects {
 void round_out_to_doubles(Interval& x) { x.set_hull(x.lo_down(), x.hi_up()); }
 
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
-                         std::vector<Interval>& image, HsWorkspace& ws) {
+                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose) {
   const Model& m = ev.model();
   const int n = m.n();
+  const std::vector<int>& u = in_pose ? m.pose : m.command;  // the unknowns
   // Mean-value form around a point of [q]: f(x,q) = f(x,q̌) + Fq(x,ξ)(q − q̌).
   ws.mid_box = box;
   std::vector<double> qmid(n);
   for (int j = 0; j < n; ++j) {
-    qmid[j] = box[m.command[j]].mid();
+    qmid[j] = box[u[j]].mid();
     if (!std::isfinite(qmid[j])) return HsStatus::Failed;
-    ws.mid_box[m.command[j]].set_point(qmid[j]);
+    ws.mid_box[u[j]].set_point(qmid[j]);
   }
   if (ev.equations(ws.mid_box, ws.f0) != EvalStatus::Defined) return HsStatus::Failed;
-  if (ev.jacobian_q(box, ws.J) != EvalStatus::Defined) return HsStatus::Failed;
+  const EvalStatus J = in_pose ? ev.jacobian_x(box, ws.J) : ev.jacobian_q(box, ws.J);
+  if (J != EvalStatus::Defined) return HsStatus::Failed;
   if (!approximate_inverse(ws.J, ws.C)) return HsStatus::Failed;
   if (ws.A.rows() != n) ws.A = IMatrix(n, n);
   ws.b.resize(n);
@@ -37,7 +39,7 @@ HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
     mpfi_set(ws.t2.get(), ws.b[i].get());
     for (int j = 0; j < n; ++j) {
       if (j == i) continue;
-      const Interval& qj = box[m.command[j]];
+      const Interval& qj = box[u[j]];
       if (j < i) {
         mpfi_intersect(ws.t1.get(), y[j].get(), qj.get());
         if (ws.t1.empty()) return HsStatus::NoSolution;
@@ -52,9 +54,9 @@ HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
     mpfi_d_sub(y[i].get(), qmid[i], ws.t2.get());
     if (!y[i].bounded() || y[i].empty()) return HsStatus::Failed;
     if (intersect) {
-      if (!y[i].intersect(box[m.command[i]])) return HsStatus::NoSolution;
+      if (!y[i].intersect(box[u[i]])) return HsStatus::NoSolution;
     } else {
-      mpfi_intersect(ws.t1.get(), y[i].get(), box[m.command[i]].get());
+      mpfi_intersect(ws.t1.get(), y[i].get(), box[u[i]].get());
       if (ws.t1.empty()) return HsStatus::NoSolution;
     }
   }
@@ -77,19 +79,20 @@ bool pose_spreads(const HsWorkspace& ws, const std::vector<Interval>& q) {
 }  // namespace
 
 Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
-                          ExistenceProof& proof, HsWorkspace& ws) {
+                          ExistenceProof& proof, HsWorkspace& ws, bool in_pose) {
   const Model& m = ev.model();
   const int n = m.n();
+  const std::vector<int>& u = in_pose ? m.pose : m.command;
   Box work = box;
   proof.inflated.resize(n);
   std::vector<Interval> y;
   Existence failure = Existence::NotProved;
   double start_width = 0;
-  for (int j = 0; j < n; ++j) start_width = std::max(start_width, box[m.command[j]].width_up());
+  for (int j = 0; j < n; ++j) start_width = std::max(start_width, box[u[j]].width_up());
   for (int k = 0; k < max_iterations; ++k) {
     // [q̃k] = mid + τ([qk] − mid): a choice, made in double and rounded outward.
     for (int j = 0; j < n; ++j) {
-      Interval& q = work[m.command[j]];
+      Interval& q = work[u[j]];
       double lo = q.lo_down(), hi = q.hi_up(), mid = q.mid();
       double nlo = mid - tau * (mid - lo), nhi = mid + tau * (hi - mid);
       nlo = std::nextafter(std::min(nlo, lo), -INFINITY);
@@ -97,7 +100,7 @@ Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int ma
       q.set_hull(nlo, nhi);
       proof.inflated[j] = q;
     }
-    HsStatus s = hansen_sengupta(ev, work, false, y, ws);
+    HsStatus s = hansen_sengupta(ev, work, false, y, ws, in_pose);
     if (s != HsStatus::Ok) return failure;
     if (k == 0 && pose_spreads(ws, proof.inflated)) failure = Existence::PoseSpread;
     bool inside = true;
@@ -114,7 +117,7 @@ Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int ma
       return Existence::Proved;
     }
     if (!(width <= 4 * start_width + 1e-300)) return failure;  // diverging
-    for (int j = 0; j < n; ++j) work[m.command[j]] = y[j];
+    for (int j = 0; j < n; ++j) work[u[j]] = y[j];
   }
   return failure;
 }

@@ -33,8 +33,10 @@ struct HsWorkspace {
 // One Hansen–Sengupta sweep on the command part of `box` (model order). The image of
 // command j is written to image[j]. With `intersect`, each component is intersected
 // with the box (the contracting operator used by Prune). C is left in ws.C.
+// With `in_pose` the roles swap: the pose is unknown, the commands are the parameters and
+// Fx replaces Fq (the existence proof in x of cuspidality witnesses, core/cuspidality.h).
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
-                         std::vector<Interval>& image, HsWorkspace& ws);
+                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose = false);
 
 struct ExistenceProof {
   std::vector<Interval> inflated;  // [q̃k], double endpoints
@@ -51,9 +53,9 @@ enum class Existence {
 };
 
 // Iteration (9) from the command part of `box`. On Existence::Proved, `proof` records the
-// iterate, its image and the preconditioner.
+// iterate, its image and the preconditioner. `in_pose`: in x, as for hansen_sengupta.
 Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
-                          ExistenceProof& proof, HsWorkspace& ws);
+                          ExistenceProof& proof, HsWorkspace& ws, bool in_pose = false);
 
 // Rounds both ends outward to doubles (a superset; identity at 53 bits).
 void round_out_to_doubles(Interval& x);

@@ -26,6 +26,10 @@ for k in ["count", "filtered", "separated_lower_bound", "sizes"]:
     assert k in s["csncs"], k
 assert s["robot"] == "PRRP" and s["csncs"]["filtered"] == 4 and s["csncs"]["separated_lower_bound"] == 4
 assert s["factors"][0]["origin"] == "det Fx", s["factors"]
+# PRRP has one command per pose and one pose per command in each aspect: no witness.
+c = s["cuspidal"]
+assert (c["witnesses"], c["assembly_witnesses"], c["csncs_assembly_search_capped"]) == (0, 0, 0), c
+assert c["per_csnc"] == [], c
 rows = list(csv.reader(open(d + "/boxes.csv")))
 assert rows[0] == ["id", "status", "csnc", "kept", "x_lo", "x_hi", "q_lo", "q_hi", "boundary"], rows[0]
 body = rows[1:]

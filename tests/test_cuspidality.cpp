@@ -3,7 +3,10 @@
 // periodic pose; and none on PRRP, whose aspects hold one command per pose.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 
 #include "cuspidality.h"
 #include "generalized_aspects.h"
@@ -88,4 +91,91 @@ TEST(PoseWitnesses, NoneOnPrrp) {
   ASSERT_EQ(r.csnc_sizes.size(), 4u);
   EXPECT_TRUE(r.cuspidal.pose.empty());
   EXPECT_EQ(r.cuspidal.count, (std::vector<int64_t>(4, 0)));
+}
+
+// "One command, two poses": the candidates offered to the proof are the pairs of one CSNC
+// whose commands meet (modulo 2π on a periodic command) and whose poses are apart.
+TEST(CommandWitnesses, CandidatesMeetInCommandsApartInPoses) {
+  set_working_precision(53);
+  // Over (x, q): 0 and 2 share commands [0.5, 1] with poses apart: a candidate; 1 meets 0
+  // in x; 3 is in another CSNC; 4 has commands apart from 0; 5 meets 0 in q modulo 2π.
+  const double t = 2 * M_PI;
+  BoxStore R = boxes({{0, 1, 0, 1}, {0.5, 2, 0, 1}, {3, 4, 0.5, 2}, {5, 6, 0, 1},
+                      {5, 6, 3, 4}, {7, 8, 0.5 + t, 0.9 + t}});
+  std::vector<std::pair<int, int>> offered;
+  auto prove = [&](CommandWitness& w) {
+    offered.emplace_back(w.a, w.b);
+    return w.a == 0;  // "proved" only for pairs with box 0
+  };
+  CuspidalWitnesses w;
+  find_command_witnesses(R, {0, 0, 0, 1, 0, 0}, 2, space(false, true), prove, w);
+  std::sort(offered.begin(), offered.end());
+  EXPECT_EQ(offered, (std::vector<std::pair<int, int>>{{0, 2}, {0, 5}, {1, 2}, {1, 5}, {2, 5}}));
+  ASSERT_EQ(w.command.size(), 2u);
+  EXPECT_EQ(w.command[1].b, 5);
+  EXPECT_EQ(w.command[1].shift(1), -1);  // box 5 − 2π meets box 0 in q
+  EXPECT_EQ(w.command_count, (std::vector<int64_t>{2, 0}));
+}
+
+namespace {
+
+AspectsResult solve_text(const std::string& text, double eps) {
+  Model m = parse_model(text, "toy");
+  AspectsConfig cfg;
+  cfg.eps = eps;
+  return compute_aspects(m, cfg);
+}
+
+}  // namespace
+
+// The squaring map of the complex plane: q = x² sends x and −x to the same command, and
+// det Fx = 4|x|² ≠ 0 off the origin, so the punctured square is one aspect holding two poses
+// per command. Every solution box has a partner around −x (some have two or three).
+TEST(CommandWitnesses, ComplexSquaringHasTwoPosesPerCommand) {
+  set_working_precision(53);
+  AspectsResult r = solve_text(
+      "robot COMPLEX_SQUARE\npose x1 in [-2, 2]\npose x2 in [-2, 2]\n"
+      "command q1 in [-5, 5]\ncommand q2 in [-9, 9]\n"
+      "equation x1*x1 - x2*x2 - q1 = 0\nequation 2*x1*x2 - q2 = 0\n", 0.3);
+  ASSERT_EQ(r.csnc_sizes.size(), 1u);
+  EXPECT_EQ(r.solutions, 80);
+  EXPECT_EQ(r.cuspidal.command.size(), 116u);
+  EXPECT_EQ(r.cuspidal.command_count, (std::vector<int64_t>{116}));
+  std::vector<bool> has(r.boxes.size(), false);
+  for (const CommandWitness& w : r.cuspidal.command) has[w.a] = has[w.b] = true;
+  for (int b = 0; b < r.boxes.size(); ++b) EXPECT_EQ(has[b], bool(r.certified[b])) << b;
+  EXPECT_EQ(r.cuspidal.command_search[0], WitnessSearch::Complete);
+  EXPECT_TRUE(r.cuspidal.pose.empty());
+  for (const CommandWitness& w : r.cuspidal.command) {
+    // The two iterates enclose x and −x: on each pose they are symmetric about 0.
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_LE(w.xa[j].lo_down(), -w.xb[j].lo_down() + 1e-6);
+      EXPECT_GE(w.xa[j].hi_up(), -w.xb[j].hi_up() - 1e-6);
+    }
+  }
+}
+
+// x = q/2 and q/2 + π on the torus: both CSNCs (2x − q ≡ 0 and ≡ π) hold two poses for
+// every command, proved across the seams of x and q.
+TEST(CommandWitnesses, DoublePoseOnTheTorus) {
+  set_working_precision(53);
+  AspectsResult r = solve_text(
+      "robot DOUBLE_POSE\npose    x in [-pi, pi] periodic\n"
+      "command q in [-pi, pi] periodic\nequation sin(x + x - q) = 0\n", 0.3);
+  ASSERT_EQ(r.csnc_sizes.size(), 2u);
+  EXPECT_EQ(r.cuspidal.command_count, (std::vector<int64_t>{57, 29}));
+  int shifted = 0;
+  for (const CommandWitness& w : r.cuspidal.command) shifted += w.shift(1) != 0;
+  EXPECT_GT(shifted, 0);
+}
+
+TEST(CommandWitnesses, NoneOnPrrp) {
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/prrp.robot");
+  AspectsConfig cfg;
+  cfg.eps = 0.1;
+  AspectsResult r = compute_aspects(m, cfg);
+  ASSERT_EQ(r.csnc_sizes.size(), 4u);
+  EXPECT_TRUE(r.cuspidal.command.empty());
+  EXPECT_EQ(r.cuspidal.command_count, (std::vector<int64_t>(4, 0)));
 }

@@ -246,3 +246,19 @@ TEST_F(HansenSengupta, RandomBoxesAgreeWithTheExactRoots) {
   EXPECT_GT(proved, 100);  // not vacuous
   EXPECT_GT(refuted, 100);
 }
+
+// The roles swapped (in_pose): q^2 - x = 0 at the point command q = 1.5 has the one pose
+// x = 2.25, proved in x with Fx = −1; a pose box without it is never proved.
+TEST_F(HansenSengupta, InPoseProvesThePoseOfAPointCommand) {
+  Model m = parse_model(
+      "robot SqrtWide\npose x in [0, 4]\ncommand q in [-3, 3]\nequation q^2 - x = 0\n", "w");
+  ModelEvaluator ev(m);
+  HsWorkspace ws;
+  ExistenceProof p;
+  ASSERT_EQ(prove_existence(ev, box1(2, 2.5, 1.5, 1.5), 1.01, 8, p, ws, true), Existence::Proved);
+  EXPECT_TRUE(p.image[0].contains(Interval(2.25, 2.25)));
+  EXPECT_TRUE(p.inflated[0].strictly_contains(p.image[0]));
+  EXPECT_NE(prove_existence(ev, box1(2.5, 3, 1.5, 1.5), 1.01, 8, p, ws, true), Existence::Proved);
+  // The command version on the same box refuses: the command is a point, not a box of q.
+  EXPECT_NE(prove_existence(ev, box1(2, 2.5, 1.5, 1.5), 1.01, 8, p, ws), Existence::Proved);
+}

@@ -78,6 +78,7 @@ struct Verdict {
   long solutions = 0, undecided = 0, links = 0, csncs = 0;
   long unexplored = 0;  // N records: a stopped run's cells never searched (complete=no)
   long cuspidal = 0, cuspidal_csncs = 0;  // verified W records; CSNCs with one
+  long assembly = 0;                      // verified V records
   long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user
   bool user_factors = false;
 };

@@ -62,6 +62,7 @@ struct Checker {
   std::vector<int64_t> sizes;    // the CSNCs' sizes
   std::pair<long, long> last_link{-1, -1};             // records are sorted: (A, B)
   std::tuple<long, long, long> last_witness{-1, -1, -1};  // (CSNC, A, B)
+  std::tuple<long, long, long> last_assembly{-1, -1, -1};  // (CSNC, A, B)
   int work_base = 29;
 
   Checker(FILE* f, Verdict& v) : rd(f), out(v) {}
@@ -135,7 +136,7 @@ struct Checker {
   void solution_leaf(const Box& cell);
   Box solution_box(const Box& cell, const Box& Q, const Box& img);
   void unique_zero(const std::string& claim, const Box& Q, const std::vector<double>& C,
-                   const Box& target, const std::string& outside);
+                   const Box& target, const std::string& outside, bool pose = false);
   void store(std::string_view signs, bool jac, const double* box, bool solution);
   template <class Record>
   void section(const char* head, const char* kind, Record record);
@@ -143,7 +144,9 @@ struct Checker {
   std::pair<double, double> inner(long a, long b, int v, int k);
   void link();
   void csnc(int64_t k);
+  void pair_in_csnc(long c, long a, long b);
   void witness();
+  void assembly();
   bool apart(long a, long b, int v);
   size_t claims(const CheckOptions& o);
   void run(const CheckOptions& o);
@@ -435,8 +438,8 @@ Box Checker::solution_box(const Box& cell, const Box& Q, const Box& img) {
 // A Hansen–Sengupta step on pr->box proves `claim` (P1 or P3): its image H lies in int Q~
 // (so f has a unique zero in Q~) and in `target` (one lo/hi pair per command).
 void Checker::unique_zero(const std::string& claim, const Box& Q, const std::vector<double>& C,
-                          const Box& target, const std::string& outside) {
-  if (const char* why = pr->newton(Q.data(), C.data())) reject(claim + ": " + why);
+                          const Box& target, const std::string& outside, bool pose) {
+  if (const char* why = pr->newton(Q.data(), C.data(), pose)) reject(claim + ": " + why);
   for (int j = 0; j < n; ++j) {
     const Ival& y = pr->y[j];
     if (!inside(y, Q[2 * j], Q[2 * j + 1], true))
@@ -571,6 +574,13 @@ void Checker::csnc(int64_t k) {
   }
 }
 
+// A < B are solution boxes of CSNC c (W and V records).
+void Checker::pair_in_csnc(long c, long a, long b) {
+  if (!(a < b)) reject("witness needs A < B");
+  if (!R.solution[a] || !R.solution[b]) reject("witness boxes are not both solution boxes");
+  if (csnc_of[a] != c || csnc_of[b] != c) reject("witness boxes are not both in the named CSNC");
+}
+
 // W CSNC A B SHIFT (FORMAT.md, "Cuspidality witnesses"): two solution boxes of one CSNC
 // whose poses overlap and whose commands are disjoint.
 void Checker::witness() {
@@ -581,9 +591,7 @@ void Checker::witness() {
   const std::vector<int> k = shifts();
   if (std::make_tuple(c, a, b) <= last_witness)
     reject("witnesses not sorted by (CSNC, A, B) or repeated");
-  if (!(a < b)) reject("witness needs A < B");
-  if (!R.solution[a] || !R.solution[b]) reject("witness boxes are not both solution boxes");
-  if (csnc_of[a] != c || csnc_of[b] != c) reject("witness boxes are not both in the named CSNC");
+  pair_in_csnc(c, a, b);
   for (int v = 0; v < nv; ++v)
     if (k[v] && (!periodic[v] || !m.vars[v].pose))
       reject("witness shift on a command or a non-periodic variable");
@@ -599,7 +607,52 @@ void Checker::witness() {
   ++out.cuspidal;
 }
 
-// Command v of boxes a and b is disjoint, modulo 2π when v is periodic: for one m, b + 2πm
+// V CSNC A B SHIFT Q* X~A CA X~B CB (FORMAT.md, "Assembly-mode witnesses"): q* lies in the
+// commands of box A and of box B + 2πk, and f(·, q*) has a zero in each box's poses, proved
+// by Hansen–Sengupta in x; the two poses are disjoint, so q* has two poses in one CSNC.
+void Checker::assembly() {
+  rd.count(5 + 5 * size_t(n) + 2 * size_t(n) * n);
+  const long c = index(sizes.size());
+  const long a = index(R.size());
+  const long b = index(R.size());
+  const std::vector<int> k = shifts();
+  if (std::make_tuple(c, a, b) <= last_assembly)
+    reject("assembly witnesses not sorted by (CSNC, A, B) or repeated");
+  pair_in_csnc(c, a, b);
+  for (int v = 0; v < nv; ++v)
+    if (k[v] && (!periodic[v] || m.vars[v].pose))
+      reject("assembly shift on a pose or a non-periodic variable");
+  bool disjoint = false;
+  for (int v : m.pose) disjoint = disjoint || apart(a, b, v);
+  if (!disjoint) reject("assembly poses are not disjoint");
+  const std::vector<double> q = rd.reals(n);
+  Box X(2 * nv);  // the point command q*; the poses are the unknowns
+  for (int j = 0; j < n; ++j) {
+    const int v = m.command[j];
+    const std::pair<double, double> I = inner(a, b, v, k[v]);
+    if (!within(I.first, I.second, q[j], q[j])) reject("q* is not in both boxes' commands");
+    X[2 * v] = q[j];
+    X[2 * v + 1] = q[j];
+  }
+  for (long id : {a, b}) {
+    const Box Xt = rd.intervals(n);
+    const std::vector<double> C = rd.reals(size_t(n) * n);
+    Box poses(2 * n);
+    for (int j = 0; j < n; ++j) {
+      const int v = m.pose[j];
+      if (!periodic[v] && !within_domain(v, Xt[2 * j], Xt[2 * j + 1]))
+        reject("x~ leaves the declared domain of " + m.vars[v].name);
+      poses[2 * j] = R.box(id)[2 * v];
+      poses[2 * j + 1] = R.box(id)[2 * v + 1];
+    }
+    pr->load(X.data());
+    unique_zero("assembly", Xt, C, poses, "the pose is not in the box", true);
+  }
+  last_assembly = {c, a, b};
+  ++out.assembly;
+}
+
+// Variable v of boxes a and b is disjoint, modulo 2π when v is periodic: for one m, b + 2πm
 // lies strictly above a and b + 2π(m − 1) strictly below it (shifted ends rounded outward;
 // the candidates m come from double arithmetic, only the MPFI comparisons decide).
 bool Checker::apart(long a, long b, int v) {
@@ -684,6 +737,10 @@ void Checker::run(const CheckOptions& o) {
     section("cuspidal", "W", [&](int64_t) { witness(); });
     rd.next();
   }
+  if (rd.kind() == "assembly") {  // an optional section
+    section("assembly", "V", [&](int64_t) { assembly(); });
+    rd.next();
+  }
   const size_t pairs = claims(o);
   out.cert_sha = rd.file_sha256();
   if (o.quiet) return;
@@ -760,6 +817,7 @@ std::vector<Count> counts(const Verdict& v) {
           {"csncs", v.csncs, true},
           {"cuspidal", v.cuspidal, true},
           {"cuspidal_csncs", v.cuspidal_csncs, true},
+          {"assembly", v.assembly, true},
           {"lower_bound", v.claimed, true},
           {"recomputed_lower_bound", v.recomputed, false},
           {"checked_lower_bound", v.checked, true}};

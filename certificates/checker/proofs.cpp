@@ -75,6 +75,7 @@ Prover::Prover(Evaluator& ev) : ev_(ev), m_(ev.model()), n_(m_.n()), nv_(ev.nv()
   A_.resize(size_t(n_) * n_);
   b_.resize(n_);
   for (int j : m_.command) cmd_mask_ |= uint64_t(1) << j;
+  for (int j : m_.pose) pose_mask_ |= uint64_t(1) << j;
   all_mask_ = nv_ >= 64 ? ~uint64_t(0) : (uint64_t(1) << nv_) - 1;
 }
 
@@ -130,16 +131,20 @@ void Prover::read_jacobians(bool pose) {
     }
 }
 
-const char* Prover::newton(const double* Q, const double* C) {
+const char* Prover::newton(const double* Q, const double* C, bool pose) {
+  const std::vector<int>& u = pose ? m_.pose : m_.command;  // the unknowns
   std::vector<Ival> X(n_);
   std::vector<Ival> c(n_);
   w_ = box;
   for (int j = 0; j < n_; ++j) {
     X[j].set(Q[2 * j], Q[2 * j + 1]);
-    w_[m_.command[j]] = X[j];
+    w_[u[j]] = X[j];
   }
-  if (!ev_.eval_ad(ev_.all_eqs, w_.data(), cmd_mask_)) return "Fq is not defined on (x, Q~)";
-  read_jacobians(false);
+  if (!ev_.eval_ad(ev_.all_eqs, w_.data(), pose ? pose_mask_ : cmd_mask_))
+    return "the Jacobian is not defined on the Newton box";
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j)
+      Jq_[i * n_ + j] = ev_.der(m_.eqs[i], u[j]);  // Fx in Jq_ when `pose`
   product(Jq_, C, A_);
   // q̌: the binary64 midpoint of Q~, clamped into it (any point of Q~ is sound).
   for (int j = 0; j < n_; ++j) {
@@ -147,14 +152,14 @@ const char* Prover::newton(const double* Q, const double* C) {
     const double hi = Q[2 * j + 1];
     const double mid = std::min(std::max(lo + 0.5 * (hi - lo), lo), hi);
     c[j].set(mid, mid);
-    w_[m_.command[j]] = c[j];
+    w_[u[j]] = c[j];
   }
-  if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return "f is not defined at (x, q-check)";
+  if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return "f is not defined at the centre";
   rhs(C);
   // In command order; row i uses X_j = Q~_j ∩ y_j for j < i.
   for (int i = 0; i < n_; ++i) {
     const Ival& aii = A_[i * n_ + i];
-    if (aii.has_zero() || !aii.bounded()) return "a diagonal entry of C*Fq contains 0";
+    if (aii.has_zero() || !aii.bounded()) return "a diagonal entry of C*J contains 0";
     gs_row(i, X, c);
     mpfi_sub(y[i], c[i], t1_);
     if (!y[i].bounded() || y[i].empty()) return "Hansen-Sengupta image is unbounded";

@@ -24,8 +24,9 @@ class Prover {
   std::vector<Ival> box;          // nv intervals: the box the next call works on
 
   // P1/P3: y = q̌ − GS(C·Fq(x, Q), C·f(x, q̌)), x the pose part of `box`, Q the inflated box
-  // (n lo/hi pairs), C row major. Returns nullptr on success, else why it failed.
-  const char* newton(const double* Q, const double* C);
+  // (n lo/hi pairs), C row major. Returns nullptr on success, else why it failed. With
+  // `pose` the roles swap (V records): x unknown in Q, Fx for Fq, the commands of `box` fixed.
+  const char* newton(const double* Q, const double* C, bool pose = false);
   std::vector<Ival> y;
   // P2 on `box`: C_X·Fx·diag(D_X) and C_Q·Fq·diag(D_Q) strictly diagonally dominant
   // (D positive). Keeps the Jacobians.
@@ -52,7 +53,7 @@ class Prover {
   Evaluator& ev_;
   const Model& m_;
   int n_, nv_;
-  uint64_t cmd_mask_ = 0, all_mask_ = 0;
+  uint64_t cmd_mask_ = 0, pose_mask_ = 0, all_mask_ = 0;
   std::vector<Ival> w_, Jx_, Jq_, A_, b_;
   Ival t1_, t2_;
 };

@@ -530,6 +530,7 @@ def main():
         failed += verdict_cases(check, sys.argv[4], sys.argv[5], work)
         failed += solved_cases(check, sys.argv[4], work)
         failed += witness_cases(check, sys.argv[4], work)
+        failed += assembly_cases(check, sys.argv[4], work)
     failed += work_limit_cases(check, work)
     return 1 if failed else 0
 
@@ -715,6 +716,94 @@ def witness_cases(check, aspects, work):
     print("%s witness/%-47s exit %d: %s" % ("ok  " if ok else "FAIL", "json_cuspidal",
                                             r.returncode, r.stdout.decode()[-80:].strip()))
     return failed + (not ok)
+
+
+# Two poses for every command in one aspect: x = q/2 and q/2 + pi on the torus (periodic),
+# and the squaring map of the complex plane around the origin (not periodic); each gives
+# "one command, two poses" witnesses (FORMAT.md, "Assembly-mode witnesses").
+DOUBLE_POSE = ("robot DOUBLE_POSE\npose    x in [-pi, pi] periodic\n"
+               "command q in [-pi, pi] periodic\nequation sin(x + x - q) = 0\n")
+COMPLEX_SQUARE = ("robot COMPLEX_SQUARE\npose x1 in [-2, 2]\npose x2 in [-2, 2]\n"
+                  "command q1 in [-5, 5]\ncommand q2 in [-9, 9]\n"
+                  "equation x1*x1 - x2*x2 - q1 = 0\nequation 2*x1*x2 - q2 = 0\n")
+
+
+def set_assembly(c, records):
+    """Replaces the assembly section by `records` (V lines); none: drops the section."""
+    i = c.find("assembly")[0]
+    j = c.find("claim")[0]
+    c.lines[i:j] = ["assembly %d" % len(records)] + records if records is not None else []
+    return c.fix_end().text()
+
+
+def assembly_edit(c, fn):
+    """The first V record of the DOUBLE_POSE certificate (n = 1), its fields edited by fn:
+    V CSNC A B SHIFT Q* XA_LO XA_HI CA XB_LO XB_HI CB."""
+    f = c.fields(c.find("V")[0])
+    fn(f)
+    return set_assembly(c, [" ".join(f)])
+
+
+def assembly_pair(c, a, b):
+    """The first V record with its boxes replaced by a and b (sorted), in the CSNC of a."""
+    k = next(k for k, ids in enumerate(components(c)) if int(a) in ids)
+    ids = [str(k)] + sorted([a, b], key=int)
+    return assembly_edit(c, lambda f: f.__setitem__(slice(1, 4), ids))
+
+
+def assembly_cases(check, aspects, work):
+    """The assembly section: PRRP has none; the toys have genuine witnesses, and forged
+    ones are rejected with the reason."""
+    certs = {}
+    for name, text in (("double_pose", DOUBLE_POSE), ("complex_square", COMPLEX_SQUARE)):
+        out = os.path.join(work, name)
+        with open(out + ".robot", "w") as f:
+            f.write(text)
+        subprocess.run([aspects, "solve", out + ".robot", "--eps", "0.3", "--out", out,
+                        "--quiet"], check=True)
+        certs[name] = open(os.path.join(out, "aspects.cert")).read()
+    dp, sq = certs["double_pose"], certs["complex_square"]
+    prrp = open(os.path.join(work, "prrp", "aspects.cert")).read()
+    k0 = lambda c: c.fields(c.find("K")[0])
+    cases = [
+        ("prrp_has_none", prrp, lambda c: c.text(), (0, " assembly=0 ")),
+        ("without_section_still_read", prrp, lambda c: set_assembly(c, None), (0, " assembly=0 ")),
+        ("double_pose_verified", dp, lambda c: c.text(), (0, " assembly=86 ")),
+        ("complex_square_verified", sq, lambda c: c.text(), (0, " assembly=116 ")),
+        ("iterate_moved_to_other_box", dp,
+         lambda c: assembly_edit(c, lambda f: f.__setitem__(slice(6, 8), f[9:11])),
+         (1, "assembly: the pose is not in the box")),
+        ("iterate_shifted", dp, lambda c: assembly_edit(c, lambda f: f.__setitem__(
+            slice(6, 8), [hx(float.fromhex(x) + 0.05) for x in f[6:8]])), (1, "assembly: ")),
+        ("q_outside_overlap", dp,
+         lambda c: assembly_edit(c, lambda f: f.__setitem__(5, hx(float.fromhex(f[5]) + 1))),
+         (1, "q* is not in both boxes' commands")),
+        ("other_csnc", dp, lambda c: assembly_edit(c, lambda f: f.__setitem__(1, "1")),
+         (1, "not both in the named CSNC")),
+        ("boxes_in_two_csncs", dp,
+         lambda c: assembly_pair(c, *[str(ids[0]) for ids in components(Cert(dp))[:2]]),
+         (1, "not both in the named CSNC")),
+        ("poses_not_disjoint", dp, lambda c: assembly_pair(c, k0(c)[1], k0(c)[2]),
+         (1, "assembly poses are not disjoint")),
+        ("shift_on_pose", dp, lambda c: assembly_edit(c, lambda f: f.__setitem__(4, "+0")),
+         (1, "assembly shift on a pose")),
+        ("unsorted", dp,
+         lambda c: set_assembly(c, [c.lines[c.find("V")[1]], c.lines[c.find("V")[0]]]),
+         (1, "not sorted")),
+        ("count_too_large", dp, lambda c: edit(c, c.find("assembly")[0], "assembly 999"),
+         (2, "expected a V record")),
+    ]
+    failed = 0
+    for name, base, fn, (want, word) in cases:
+        path = os.path.join(work, "assembly__%s.cert" % name)
+        with open(path, "w") as f:
+            f.write(fn(Cert(base)))
+        code, msg = run(check, path)
+        ok = code == want and word in msg
+        print("%s assembly/%-46s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
+                                                               code, want, word, msg[:110]))
+        failed += not ok
+    return failed
 
 
 def work_bomb(terms=200):
