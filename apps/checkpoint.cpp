@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "certificate_writer.h"
+#include "le_reader.h"
 
 namespace aspects {
 
@@ -93,59 +94,23 @@ class Out {
   bool ok_ = true;
 };
 
-class In {
+class In : public LeReader {
  public:
-  In(const std::string& b, size_t end, const std::string& path) : b_(b), end_(end), path_(path) {}
-  [[noreturn]] void fail(const std::string& why) const {
+  In(const std::string& b, size_t end, const std::string& path) : LeReader(b, end), path_(path) {}
+  [[noreturn]] void fail(const std::string& why) const override {
     throw CheckpointError(path_ + ": damaged checkpoint (" + why + " at byte " +
-                          std::to_string(pos_) + "): refused, and left as it is");
+                          std::to_string(pos()) + "): refused, and left as it is");
   }
-  void need(uint64_t n) const {
-    if (end_ - pos_ < n) fail("truncated");
-  }
-  uint64_t u64() {
-    need(8);
-    uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= uint64_t(uint8_t(b_[pos_ + i])) << (8 * i);
-    pos_ += 8;
-    return v;
-  }
-  uint32_t u32() {
-    need(4);
-    uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= uint32_t(uint8_t(b_[pos_ + i])) << (8 * i);
-    pos_ += 4;
-    return v;
-  }
-  uint8_t u8() {
-    need(1);
-    return uint8_t(b_[pos_++]);
-  }
-  int32_t i32() { return int32_t(u32()); }
-  double f64() {
-    uint64_t v = u64();
-    double d;
-    std::memcpy(&d, &v, 8);
-    return d;
-  }
-  std::string str() {
-    uint64_t n = u64();
-    need(n);
-    std::string s = b_.substr(pos_, n);
-    pos_ += n;
-    return s;
-  }
+  double f64() { return f64_bits(); }
+  std::string str() { return bytes(u64()); }
   // A count of records of at least `bytes` each, checked before anything is allocated.
   uint32_t count(uint64_t bytes) {
     uint32_t c = u32();
-    if (uint64_t(c) * bytes > end_ - pos_) fail("a count larger than the file");
+    if (uint64_t(c) * bytes > left()) fail("a count larger than the file");
     return c;
   }
-  bool at_end() const { return pos_ == end_; }
 
  private:
-  const std::string& b_;
-  size_t end_, pos_ = 0;
   std::string path_;
 };
 

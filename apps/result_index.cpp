@@ -10,6 +10,7 @@
 #include "generalized_aspects.h"
 #include "link.h"
 #include "model.h"
+#include "le_reader.h"
 
 namespace aspects {
 
@@ -53,50 +54,22 @@ class Writer {
   std::string out_;
 };
 
-class Reader {
+class Reader : public LeReader {
  public:
-  Reader(const std::string& b, const std::string& what) : b_(b), what_(what) {}
-  [[noreturn]] void fail(const std::string& msg) const {
-    throw IndexError(what_ + ": malformed result index at byte " + std::to_string(pos_) + ": " +
+  Reader(const std::string& b, const std::string& what) : LeReader(b, b.size()), what_(what) {}
+  [[noreturn]] void fail(const std::string& msg) const override {
+    throw IndexError(what_ + ": malformed result index at byte " + std::to_string(pos()) + ": " +
                      msg + " (re-run `aspects solve --out`)");
   }
-  void need(size_t n) const {
-    if (b_.size() - pos_ < n) fail("truncated");
-  }
-  size_t left() const { return b_.size() - pos_; }
-  uint64_t u64() {
-    need(8);
-    uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= uint64_t(uint8_t(b_[pos_ + i])) << (8 * i);
-    pos_ += 8;
-    return v;
-  }
-  uint32_t u32() {
-    need(4);
-    uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= uint32_t(uint8_t(b_[pos_ + i])) << (8 * i);
-    pos_ += 4;
-    return v;
-  }
-  uint8_t u8() {
-    need(1);
-    return uint8_t(b_[pos_++]);
-  }
-  int32_t i32() { return int32_t(u32()); }
   double f64() {
-    uint64_t v = u64();
-    double d;
-    std::memcpy(&d, &v, 8);
+    double d = f64_bits();
     if (!std::isfinite(d)) fail("a number is not finite");
     return d;
   }
   std::string str(size_t max_len) {
     uint32_t n = u32();
     if (n > max_len) fail("string too long");
-    need(n);
-    std::string s = b_.substr(pos_, n);
-    pos_ += n;
-    return s;
+    return bytes(n);
   }
   // A record count, checked against the bytes left before anything is allocated.
   uint32_t count(size_t record_bytes) {
@@ -104,17 +77,9 @@ class Reader {
     if (uint64_t(c) * record_bytes > left()) fail("truncated (a count is larger than the file)");
     return c;
   }
-  bool literal(const char* s) {
-    size_t n = std::strlen(s);
-    if (left() < n || b_.compare(pos_, n, s) != 0) return false;
-    pos_ += n;
-    return true;
-  }
 
  private:
-  const std::string& b_;
   std::string what_;
-  size_t pos_ = 0;
 };
 
 // certify_link's choice of witness (proofs/link.cpp): the midpoint of the inner
