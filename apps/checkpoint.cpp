@@ -103,12 +103,6 @@ class In : public LeReader {
   }
   double f64() { return f64_bits(); }
   std::string str() { return bytes(u64()); }
-  // A count of records of at least `bytes` each, checked before anything is allocated.
-  uint32_t count(uint64_t bytes) {
-    uint32_t c = u32();
-    if (uint64_t(c) * bytes > left()) fail("a count larger than the file");
-    return c;
-  }
 
  private:
   std::string path_;

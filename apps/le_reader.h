@@ -32,6 +32,13 @@ class LeReader {
     std::memcpy(&d, &v, 8);
     return d;
   }
+  // A count of records of at least `record_bytes` each, checked against the bytes left
+  // before the caller allocates anything for them.
+  uint32_t count(uint64_t record_bytes) {
+    uint32_t c = u32();
+    if (uint64_t(c) * record_bytes > left()) fail("truncated (a count is larger than the file)");
+    return c;
+  }
   // Skips the bytes of `s` when they come next; false (nothing read) otherwise.
   bool literal(const char* s) {
     size_t n = std::strlen(s);

@@ -71,12 +71,6 @@ class Reader : public LeReader {
     if (n > max_len) fail("string too long");
     return bytes(n);
   }
-  // A record count, checked against the bytes left before anything is allocated.
-  uint32_t count(size_t record_bytes) {
-    uint32_t c = u32();
-    if (uint64_t(c) * record_bytes > left()) fail("truncated (a count is larger than the file)");
-    return c;
-  }
 
  private:
   std::string what_;

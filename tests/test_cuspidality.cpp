@@ -82,7 +82,8 @@ TEST(PoseWitnesses, CapStopsTheSearch) {
   EXPECT_EQ(w.search[0], WitnessSearch::Capped);
 }
 
-TEST(PoseWitnesses, NoneOnPrrp) {
+// PRRP has neither kind of witness (one solve checks both searches).
+TEST(CuspidalWitnesses, NoneOfEitherKindOnPrrp) {
   set_working_precision(53);
   Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/prrp.robot");
   AspectsConfig cfg;
@@ -91,6 +92,8 @@ TEST(PoseWitnesses, NoneOnPrrp) {
   ASSERT_EQ(r.csnc_sizes.size(), 4u);
   EXPECT_TRUE(r.cuspidal.pose.empty());
   EXPECT_EQ(r.cuspidal.count, (std::vector<int64_t>(4, 0)));
+  EXPECT_TRUE(r.cuspidal.command.empty());
+  EXPECT_EQ(r.cuspidal.command_count, (std::vector<int64_t>(4, 0)));
 }
 
 // "One command, two poses": the candidates offered to the proof are the pairs of one CSNC
@@ -167,15 +170,4 @@ TEST(CommandWitnesses, DoublePoseOnTheTorus) {
   int shifted = 0;
   for (const CommandWitness& w : r.cuspidal.command) shifted += w.shift(1) != 0;
   EXPECT_GT(shifted, 0);
-}
-
-TEST(CommandWitnesses, NoneOnPrrp) {
-  set_working_precision(53);
-  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/prrp.robot");
-  AspectsConfig cfg;
-  cfg.eps = 0.1;
-  AspectsResult r = compute_aspects(m, cfg);
-  ASSERT_EQ(r.csnc_sizes.size(), 4u);
-  EXPECT_TRUE(r.cuspidal.command.empty());
-  EXPECT_EQ(r.cuspidal.command_count, (std::vector<int64_t>(4, 0)));
 }
