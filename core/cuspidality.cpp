@@ -27,6 +27,13 @@ void shifted(Interval& t, const Interval& two_pi, long m, double x) {
 bool disjoint_mod_period(double al, double ah, double bl, double bh, const Interval& two_pi) {
   const double guess = std::ceil((ah - bl) / (2 * M_PI));
   if (!(std::fabs(guess) < 1048576)) return false;
+  // A filter in double, with a slack far beyond the error of 2π·m in double (|m| < 2^20):
+  // a pair that has no gap even then has none in MPFI, and most pairs are such.
+  const double slack = 1e-9 * (1 + std::fabs(al) + std::fabs(ah) + std::fabs(bl) + std::fabs(bh));
+  bool gap = false;
+  for (long m = long(guess) - 1; m <= long(guess) + 1 && !gap; ++m)
+    gap = ah < bl + 2 * M_PI * m + slack && bh + 2 * M_PI * (m - 1) - slack < al;
+  if (!gap) return false;
   Interval t;
   for (long m = long(guess) - 1; m <= long(guess) + 1; ++m) {
     shifted(t, two_pi, m, bl);
@@ -73,6 +80,16 @@ bool meet(const BoxStore& R, int a, int b, const std::vector<int>& k,
     }
     if (!(std::max(R.lo(a, v), blo) <= std::min(R.hi(a, v), bhi))) return false;
   }
+  return true;
+}
+
+// The non-periodic variables of `vars` (shifted by k = 0 only): [a] and [b] meet. Exact
+// in double, and necessary for meet() whatever k, so it runs first: most pairs fail it.
+bool meet_unshifted(const BoxStore& R, int a, int b, const std::vector<int>& vars,
+                    const WitnessSpace& s) {
+  for (int v : vars)
+    if (!s.periodic[v] && std::max(R.lo(a, v), R.lo(b, v)) > std::min(R.hi(a, v), R.hi(b, v)))
+      return false;
   return true;
 }
 
@@ -123,7 +140,8 @@ WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members,
       const bool i_first = e[i].box < e[j].box;
       const Entry& A = i_first ? e[i] : e[j];
       const Entry& B = i_first ? e[j] : e[i];
-      if (A.k != 0 || !apart(R, A.box, B.box, apart_vars, s)) continue;
+      if (A.k != 0 || !meet_unshifted(R, A.box, B.box, meet_vars, s)) continue;
+      if (!apart(R, A.box, B.box, apart_vars, s)) continue;
       for (int combo = 0; combo < combos; ++combo) {
         std::fill(k.begin(), k.end(), 0);
         k[v0] = B.k;
@@ -173,49 +191,74 @@ bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s) {
 }
 
 CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc,
-                                      int csncs, const WitnessSpace& s, int64_t cap) {
+                                      int csncs, const WitnessSpace& s, int64_t cap,
+                                      const ForEachIndex& for_each) {
   CuspidalWitnesses w;
   w.count.assign(csncs, 0);
   w.search.assign(csncs, WitnessSearch::Complete);
   if (s.pose.empty() || s.command.empty()) return w;
   const std::vector<std::vector<int32_t>> members = members_of(csnc, csncs);
-  for (int32_t c = 0; c < csncs; ++c) {
-    const size_t first = w.pose.size();
+  std::vector<std::vector<PoseWitness>> found(csncs);
+  for_each(csncs, [&](int32_t c) {
     auto take = [&](int32_t a, int32_t b, const std::vector<int>& k) {
-      w.pose.push_back({c, a, b, pack_shift(k)});
+      found[c].push_back({c, a, b, pack_shift(k)});
       return true;
     };
     w.search[c] = sweep(R, members[c], s, s.pose, s.command, cap, INT64_MAX, take);
-    unique_pairs(w.pose, first);
-    w.count[c] = int64_t(w.pose.size() - first);
-  }
+    unique_pairs(found[c], 0);
+    w.count[c] = int64_t(found[c].size());
+  });
+  for (auto& f : found) w.pose.insert(w.pose.end(), f.begin(), f.end());
   return w;
 }
 
 void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc, int csncs,
                             const WitnessSpace& s, const ProveCommandWitness& prove,
-                            CuspidalWitnesses& w, int64_t cap, int64_t attempts) {
+                            CuspidalWitnesses& w, int64_t cap, int64_t attempts,
+                            const ForEachIndex& for_each) {
   w.command.clear();
   w.command_count.assign(csncs, 0);
   w.command_search.assign(csncs, WitnessSearch::Complete);
   if (s.pose.empty() || s.command.empty()) return;
   const std::vector<std::vector<int32_t>> members = members_of(csnc, csncs);
-  for (int32_t c = 0; c < csncs; ++c) {
-    const size_t first = w.command.size();
-    auto take = [&](int32_t a, int32_t b, const std::vector<int>& k) {
+  std::vector<std::vector<CommandWitness>> found(csncs);
+  for_each(csncs, [&](int32_t c) {
+    // The sweep lists the candidates (cheap), the proofs (costly) run at once, and the
+    // proved ones are taken in sweep order: the same witnesses for any thread count.
+    std::vector<CommandWitness> candidates;
+    auto list = [&](int32_t a, int32_t b, const std::vector<int>& k) {
       CommandWitness cw;
       cw.csnc = c;
       cw.a = a;
       cw.b = b;
       cw.shift_code = pack_shift(k);
-      if (!prove(cw)) return false;
-      w.command.push_back(std::move(cw));
-      return true;
+      candidates.push_back(std::move(cw));
+      return false;
     };
-    w.command_search[c] = sweep(R, members[c], s, s.command, s.pose, cap, attempts, take);
-    unique_pairs(w.command, first);
-    w.command_count[c] = int64_t(w.command.size() - first);
-  }
+    w.command_search[c] = sweep(R, members[c], s, s.command, s.pose, INT64_MAX, attempts, list);
+    std::vector<uint8_t> proved(candidates.size(), 0);
+    for_each(int(candidates.size()), [&](int32_t i) { proved[i] = prove(candidates[i]); });
+    for (size_t i = 0; i < candidates.size(); ++i) {
+      if (!proved[i]) continue;
+      const CommandWitness& w_i = candidates[i];
+      // Another shift of the pair just taken (the sweep offers a pair's shifts in a row).
+      if (!found[c].empty() && found[c].back().a == w_i.a && found[c].back().b == w_i.b)
+        continue;
+      if (int64_t(found[c].size()) >= cap) {
+        w.command_search[c] = WitnessSearch::Capped;
+        break;
+      }
+      found[c].push_back(std::move(candidates[i]));
+    }
+    unique_pairs(found[c], 0);
+    w.command_count[c] = int64_t(found[c].size());
+  });
+  for (auto& f : found)
+    for (auto& cw : f) w.command.push_back(std::move(cw));
+}
+
+void serial_for_each(int csncs, const std::function<void(int32_t)>& body) {
+  for (int32_t c = 0; c < csncs; ++c) body(c);
 }
 
 }  // namespace aspects

@@ -71,20 +71,30 @@ bool poses_overlap(const BoxStore& R, int a, int b, const std::vector<int>& k,
 // the command is not periodic), proved with the shifted ends rounded outward.
 bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s);
 
+// Runs body(i) for every i < n, in any order and possibly at once. The searches use it
+// over CSNCs and over the candidates of one CSNC, whose bodies share nothing but the
+// boxes: the results do not depend on the order.
+using ForEachIndex = std::function<void(int n, const std::function<void(int32_t)>& body)>;
+void serial_for_each(int n, const std::function<void(int32_t)>& body);
+
 // csnc: CSNC of each box (-1: not a solution box); csncs: number of CSNCs. At most `cap`
 // witnesses per CSNC.
 CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc,
-                                      int csncs, const WitnessSpace& s, int64_t cap = 10000);
+                                      int csncs, const WitnessSpace& s, int64_t cap = 10000,
+                                      const ForEachIndex& for_each = serial_for_each);
 
 // Fills q, xa, xb, ca, cb of a candidate (csnc, a, b, shift_code set) and returns true when
-// the existence proofs succeed.
+// the existence proofs succeed. Called from several threads at once when for_each runs
+// CSNCs in parallel.
 using ProveCommandWitness = std::function<bool(CommandWitness&)>;
 
-// Candidates: boxes of one CSNC with meeting commands and disjoint poses; the proved ones
-// go to w.command (with the per-CSNC count and search). At most `cap` witnesses and
-// `attempts` proofs per CSNC (then Capped).
+// Candidates: boxes of one CSNC with meeting commands and disjoint poses, in sweep order,
+// each shift k of a pair a candidate; the first `attempts` of them are proved (then the
+// search is Capped), and the proved ones go to w.command in that order, each pair once,
+// at most `cap` per CSNC (then Capped), with the per-CSNC count and search.
 void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc, int csncs,
                             const WitnessSpace& s, const ProveCommandWitness& prove,
-                            CuspidalWitnesses& w, int64_t cap = 1000, int64_t attempts = 100000);
+                            CuspidalWitnesses& w, int64_t cap = 1000, int64_t attempts = 100000,
+                            const ForEachIndex& for_each = serial_for_each);
 
 }  // namespace aspects

@@ -9,22 +9,28 @@ namespace aspects {
 
 namespace {
 
-// Iteration (9) in x at the commands of `at`, from box b's pose part. The image, widened
-// by the checker's margin, must lie in the box (P1 applies there) and, on a non-periodic
-// pose, in the inner declared domain (the same rule as check_cert's); so must [x~] there.
-bool zero_in_box(ModelEvaluator& ev, const BoxStore& R, int b, Box at, double tau,
-                 std::vector<Interval>& x, std::vector<double>& C, HsWorkspace& ws) {
+// Box b's pose part at the commands of `at`, contracted: f(X, q*) must contain 0, then one
+// Hansen–Sengupta sweep with intersection must leave a nonempty box. Both tests are
+// necessary for a zero in the box, and most candidates fail one of them, so they run on
+// both boxes of a candidate before either proof.
+bool may_hold_zero(ModelEvaluator& ev, const BoxStore& R, int b, Box& at, HsWorkspace& ws) {
   const Model& m = ev.model();
   for (int v : m.pose) at[v].set_hull(R.lo(b, v), R.hi(b, v));
-  // Most candidates have no zero in the box: f(X, q*) ∌ 0 says so at the cost of one
-  // evaluation, then one contracting sweep; the others start iteration (9) from the
-  // contracted box.
   std::vector<Interval> y;
   if (ev.equations(at, y) != EvalStatus::Defined) return false;
   for (const Interval& fi : y)
     if (!fi.contains_zero()) return false;
   if (hansen_sengupta(ev, at, true, y, ws, true) != HsStatus::Ok) return false;
   for (size_t j = 0; j < m.pose.size(); ++j) at[m.pose[j]] = y[j];
+  return true;
+}
+
+// Iteration (9) in x from the contracted box `at`. The image, widened by the checker's
+// margin, must lie in box b (P1 applies there) and, on a non-periodic pose, in the inner
+// declared domain (the same rule as check_cert's); so must [x~] there.
+bool zero_in_box(ModelEvaluator& ev, const BoxStore& R, int b, const Box& at, double tau,
+                 std::vector<Interval>& x, std::vector<double>& C, HsWorkspace& ws) {
+  const Model& m = ev.model();
   ExistenceProof p;
   if (prove_existence(ev, at, tau, 12, p, ws, true) != Existence::Proved) return false;
   for (size_t j = 0; j < m.pose.size(); ++j) {
@@ -58,8 +64,10 @@ bool prove_command_witness(ModelEvaluator& ev, const BoxStore& R, double tau, Co
     at[v].set_point(q);
   }
   // f is 2π-periodic in the commands: q* serves box B as well as q* − 2πk would.
-  return zero_in_box(ev, R, w.a, at, tau, w.xa, w.ca, ws) &&
-         zero_in_box(ev, R, w.b, at, tau, w.xb, w.cb, ws);
+  Box at_b = at;
+  return may_hold_zero(ev, R, w.a, at, ws) && may_hold_zero(ev, R, w.b, at_b, ws) &&
+         zero_in_box(ev, R, w.a, at, tau, w.xa, w.ca, ws) &&
+         zero_in_box(ev, R, w.b, at_b, tau, w.xb, w.cb, ws);
 }
 
 }  // namespace aspects

@@ -1,5 +1,6 @@
 #include "generalized_aspects.h"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -446,18 +447,37 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   out.separation = separate_by_signs(out.boxes.size(), int(out.factors.size()), out.signs,
                                      out.certified, out.neighbors, &out.csnc);
   lap("components and separation");
-  // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC.
+  // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC. The
+  // CSNCs are searched in parallel; the witnesses are the same for any thread count.
+  tbb::task_arena witness_arena(std::max(1, config.threads));
+  const ForEachIndex in_parallel = [&](int csncs, const std::function<void(int32_t)>& body) {
+    witness_arena.execute([&] {
+      // One CSNC per task: a few large CSNCs hold nearly all the work.
+      tbb::parallel_for(
+          tbb::blocked_range<int>(0, csncs, 1),
+          [&](const tbb::blocked_range<int>& r) {
+            for (int c = r.begin(); c < r.end(); ++c) body(c);
+          },
+          tbb::simple_partitioner());
+    });
+  };
   const WitnessSpace space(model.pose, model.command, periodic);
-  out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space);
+  const int csncs = int(out.csnc_sizes.size());
+  out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, csncs, space, 10000, in_parallel);
   lap("cuspidality");
   // ... and "one command, two poses" (assembly-mode changes), each proved in x at a point.
-  ModelEvaluator assembly_ev(model);
-  HsWorkspace assembly_ws;
-  auto prove = [&](CommandWitness& w) {
-    return prove_command_witness(assembly_ev, out.boxes, config.tau, w, assembly_ws);
+  struct AssemblyProver {
+    ModelEvaluator ev;
+    HsWorkspace ws;
+    explicit AssemblyProver(const Model& m) : ev(m) {}
   };
-  find_command_witnesses(out.boxes, out.csnc, int(out.csnc_sizes.size()), space, prove,
-                         out.cuspidal);
+  tbb::enumerable_thread_specific<AssemblyProver> provers([&] { return AssemblyProver(model); });
+  auto prove = [&](CommandWitness& w) {
+    AssemblyProver& p = provers.local();
+    return prove_command_witness(p.ev, out.boxes, config.tau, w, p.ws);
+  };
+  find_command_witnesses(out.boxes, out.csnc, csncs, space, prove, out.cuspidal, 1000, 100000,
+                         in_parallel);
   lap("assembly witnesses");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
