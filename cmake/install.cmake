@@ -10,7 +10,7 @@ set_target_properties(aspects_cert_writer PROPERTIES EXPORT_NAME cert_writer)
 
 install(TARGETS aspects check_cert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # Users include <aspects/NAME.h>; the headers include each other by "NAME.h" (same folder).
-install(TARGETS mpfi_deps aspects_core aspects_engine aspects_cert_writer
+install(TARGETS mpfi_deps arb_deps aspects_core aspects_engine aspects_cert_writer
         EXPORT aspectsTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -38,6 +38,28 @@ bool meet_symmetric(Interval& a, const Interval& p, BackwardScratch& s) {
   return true;
 }
 
+// base := asin(r) (sin) or acos(r) (cos), r ⊆ [−1, 1]. At 53 bits from Arb's bounds at
+// the two ends (asin increases, acos decreases), otherwise MPFI.
+void base_angle(bool is_sin, const Interval& r, Interval& base, BackwardScratch& s) {
+  if (mpfi_get_prec(base.get()) != 53 || mpfi_get_prec(r.get()) != 53) {
+    if (is_sin)
+      mpfi_asin(base.get(), r.get());
+    else
+      mpfi_acos(base.get(), r.get());
+    return;
+  }
+  double lo_lo, lo_hi, hi_lo, hi_hi;  // bounds of the function at r's lower and upper end
+  if (is_sin) {
+    s.arb.asin(r.lo_down(), lo_lo, lo_hi);
+    s.arb.asin(r.hi_up(), hi_lo, hi_hi);
+    mpfi_interv_d(base.get(), lo_lo, hi_hi);
+  } else {
+    s.arb.acos(r.lo_down(), lo_lo, lo_hi);
+    s.arb.acos(r.hi_up(), hi_lo, hi_hi);
+    mpfi_interv_d(base.get(), hi_lo, lo_hi);
+  }
+}
+
 // a ∩= {t : sin t ∈ r} (or cos). The preimage is ∪k (b + 2kπ) ∪ (π − b + 2kπ) with
 // b = asin(r) for sin, ∪k (±b + 2kπ) with b = acos(r) for cos; each piece is an MPFI
 // enclosure, so the hull of their intersections with a contains every preimage in a.
@@ -47,22 +69,31 @@ bool project_periodic(bool is_sin, Interval& r, Interval& a, const Interval& two
   if (!r.intersect(s.t1)) return false;
   if (!a.bounded()) return true;
   Interval& base = s.t1;
-  if (is_sin)
-    mpfi_asin(base.get(), r.get());
-  else
-    mpfi_acos(base.get(), r.get());
+  base_angle(is_sin, r, base, s);
   double period = 6.283185307179586;
   double kmin = std::floor(a.lo_down() / period) - 1, kmax = std::ceil(a.hi_up() / period) + 1;
   if (kmax - kmin > 8) return true;  // a spans many periods: nothing to gain
+  const double blo = base.lo_down(), bhi = base.hi_up();
+  if (is_sin) mpfi_const_pi(s.t2.get());
   Interval& piece = s.t3;
   bool empty = true;
   for (double k = kmin; k <= kmax; ++k) {
     for (int branch = 0; branch < 2; ++branch) {
+      // The piece in double, [plo, phi] up to rounding (far below the slack): a piece that
+      // misses a by more than the slack misses it in MPFI too, and most pieces do.
+      double plo = blo, phi = bhi;
+      if (branch == 1) {
+        plo = (is_sin ? M_PI : 0) - bhi;
+        phi = (is_sin ? M_PI : 0) - blo;
+      }
+      plo += period * k;
+      phi += period * k;
+      const double slack = 1e-9 * (1 + std::fabs(plo) + std::fabs(phi));
+      if (phi + slack < a.lo_down() || plo - slack > a.hi_up()) continue;
       if (branch == 0) {
         mpfi_set(piece.get(), base.get());
       } else if (is_sin) {
-        mpfi_const_pi(piece.get());
-        mpfi_sub(piece.get(), piece.get(), base.get());
+        mpfi_sub(piece.get(), s.t2.get(), base.get());
       } else {
         mpfi_neg(piece.get(), base.get());
       }

@@ -6,6 +6,7 @@
 // Temporaries live in the caller's BackwardScratch: no state is kept between calls.
 #pragma once
 
+#include "arb_bounds.h"
 #include "interval.h"
 
 namespace aspects {
@@ -13,6 +14,7 @@ namespace aspects {
 // Temporaries of the kernels, at the working precision when created. One per evaluator.
 struct BackwardScratch {
   Interval t1, t2, t3, t4, hull;
+  ArbBounds arb;  // asin and acos at 53 bits
 };
 
 // a ∩= r − b, then b ∩= r − a.                                   ({(a, b) : a + b ∈ r})

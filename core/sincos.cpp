@@ -1,10 +1,11 @@
 #include "sincos.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace aspects {
 
-SinCos::SinCos() {
+SinCos::SinCos() : doubles_(mpfr_get_default_prec() == 53) {
   mpfr_prec_t p = mpfr_get_default_prec();
   mpfr_inits2(p, s_lo_, c_lo_, s_hi_, c_hi_, static_cast<mpfr_ptr>(nullptr));
 }
@@ -33,6 +34,24 @@ void SinCos::enclose(const Interval& a, Interval& s, Interval& c) {
     mpfi_cos(c.get(), a.get());
     return;
   }
+  // On (jπ/2, (j+1)π/2): sin increases in quadrants 0 and 3 (mod 4), cos in 2 and 3.
+  const long quadrant = ((j % 4) + 4) % 4;
+  const bool sin_up = quadrant == 0 || quadrant == 3;
+  const bool cos_up = quadrant == 2 || quadrant == 3;
+  if (!doubles_) {
+    enclose_mpfr(a, sin_up, cos_up, s, c);
+    return;
+  }
+  double sl[2], sh[2], cl[2], ch[2];  // bounds at the lower [0] and upper [1] end
+  arb_.sin_cos(a.lo_down(), sl[0], sh[0], cl[0], ch[0]);
+  const int u = a.lo_down() == a.hi_up() ? 0 : 1;  // a point: both ends are one
+  if (u == 1) arb_.sin_cos(a.hi_up(), sl[1], sh[1], cl[1], ch[1]);
+  // Monotone on the quadrant: the minimum is at one end, the maximum at the other.
+  mpfi_interv_d(s.get(), std::max(-1.0, sl[sin_up ? 0 : u]), std::min(1.0, sh[sin_up ? u : 0]));
+  mpfi_interv_d(c.get(), std::max(-1.0, cl[cos_up ? 0 : u]), std::min(1.0, ch[cos_up ? u : 0]));
+}
+
+void SinCos::enclose_mpfr(const Interval& a, bool sin_up, bool cos_up, Interval& s, Interval& c) {
   mpfr_srcptr lo = &a.get()->left;
   mpfr_srcptr hi = &a.get()->right;
   // Rounded to nearest, so the true value lies strictly between the neighbours of the
@@ -44,10 +63,6 @@ void SinCos::enclose(const Interval& a, Interval& s, Interval& c) {
   } else {
     mpfr_sin_cos(s_hi_, c_hi_, hi, MPFR_RNDN);
   }
-  // On (jπ/2, (j+1)π/2): sin increases in quadrants 0 and 3 (mod 4), cos in 2 and 3.
-  long quadrant = ((j % 4) + 4) % 4;
-  bool sin_up = quadrant == 0 || quadrant == 3;
-  bool cos_up = quadrant == 2 || quadrant == 3;
   mpfr_ptr s_min = sin_up ? s_lo_ : s_hi_;
   mpfr_ptr s_max = sin_up ? s_hi_ : s_lo_;
   mpfr_ptr c_min = cos_up ? c_lo_ : c_hi_;

@@ -3,10 +3,13 @@
 // at 256 bits — the endpoint values and, for every multiple of π/2 inside, the extreme
 // value ±1 reached there. The enclosure must contain that range; in the one-quadrant
 // fast path it must also be tight (within a few ulps of it).
+// At 53 bits the endpoint values come from Arb, above from MPFR (HigherPrecisionStaysSound).
 // Break it to see it fail: swap `sin_up` for `!sin_up` in sincos.cpp (both random
-// tests fail). The 1e-9 margin of the quadrant test cannot be caught this way: an
-// extremum within rounding of an endpoint changes the range by far less than the
-// one-ulp outward step; the margin is there by the error bound stated in sincos.cpp.
+// tests fail), or round Arb's ball outward the wrong way in ArbBounds::Balls::bounds (FLOOR
+// and CEIL exchanged: the containment tests fail). The 1e-9 margin of the quadrant test
+// cannot be caught this way: an extremum within rounding of an endpoint changes the range
+// by far less than the one-ulp outward step; the margin is there by the error bound
+// stated in sincos.cpp.
 #include <gtest/gtest.h>
 
 #include <mpfr.h>
