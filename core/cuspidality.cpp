@@ -215,7 +215,7 @@ CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32
 void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc, int csncs,
                             const WitnessSpace& s, const ProveCommandWitness& prove,
                             CuspidalWitnesses& w, int64_t cap, int64_t attempts,
-                            const ForEachIndex& for_each) {
+                            int64_t attempts_per_box, const ForEachIndex& for_each) {
   w.command.clear();
   w.command_count.assign(csncs, 0);
   w.command_search.assign(csncs, WitnessSearch::Complete);
@@ -235,7 +235,9 @@ void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc,
       candidates.push_back(std::move(cw));
       return false;
     };
-    w.command_search[c] = sweep(R, members[c], s, s.command, s.pose, INT64_MAX, attempts, list);
+    const int64_t per_size = attempts_per_box * int64_t(members[c].size());
+    const int64_t budget = std::min(attempts, std::max(attempts / 10, per_size));
+    w.command_search[c] = sweep(R, members[c], s, s.command, s.pose, INT64_MAX, budget, list);
     std::vector<uint8_t> proved(candidates.size(), 0);
     for_each(int(candidates.size()), [&](int32_t i) { proved[i] = prove(candidates[i]); });
     for (size_t i = 0; i < candidates.size(); ++i) {

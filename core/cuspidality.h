@@ -89,12 +89,14 @@ CuspidalWitnesses find_pose_witnesses(const BoxStore& R, const std::vector<int32
 using ProveCommandWitness = std::function<bool(CommandWitness&)>;
 
 // Candidates: boxes of one CSNC with meeting commands and disjoint poses, in sweep order,
-// each shift k of a pair a candidate; the first `attempts` of them are proved (then the
-// search is Capped), and the proved ones go to w.command in that order, each pair once,
+// each shift k of a pair a candidate; the first min(attempts, max(attempts / 10,
+// attempts_per_box × boxes of the CSNC)) of them are proved (then the search is Capped):
+// past a floor, the cost follows the size of the CSNC, and the proved ones go to w.command in that order, each pair once,
 // at most `cap` per CSNC (then Capped), with the per-CSNC count and search.
 void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc, int csncs,
                             const WitnessSpace& s, const ProveCommandWitness& prove,
                             CuspidalWitnesses& w, int64_t cap = 1000, int64_t attempts = 100000,
+                            int64_t attempts_per_box = 8,
                             const ForEachIndex& for_each = serial_for_each);
 
 }  // namespace aspects

@@ -9,17 +9,21 @@ namespace aspects {
 
 namespace {
 
-// Box b's pose part at the commands of `at`, contracted: f(X, q*) must contain 0, then one
-// Hansen–Sengupta sweep with intersection must leave a nonempty box. Both tests are
-// necessary for a zero in the box, and most candidates fail one of them, so they run on
-// both boxes of a candidate before either proof.
-bool may_hold_zero(ModelEvaluator& ev, const BoxStore& R, int b, Box& at, HsWorkspace& ws) {
-  const Model& m = ev.model();
-  for (int v : m.pose) at[v].set_hull(R.lo(b, v), R.hi(b, v));
-  std::vector<Interval> y;
+// Box b's pose part at the commands of `at`: f(X, q*) ∋ 0 is necessary for a zero in it.
+// One evaluation; most candidates fail it on one of their two boxes.
+bool image_holds_zero(ModelEvaluator& ev, const BoxStore& R, int b, Box& at,
+                      std::vector<Interval>& y) {
+  for (int v : ev.model().pose) at[v].set_hull(R.lo(b, v), R.hi(b, v));
   if (ev.equations(at, y) != EvalStatus::Defined) return false;
   for (const Interval& fi : y)
     if (!fi.contains_zero()) return false;
+  return true;
+}
+
+// One Hansen–Sengupta sweep in x with intersection: an empty result proves there is no
+// zero; otherwise `at` is contracted.
+bool contract_pose(ModelEvaluator& ev, Box& at, std::vector<Interval>& y, HsWorkspace& ws) {
+  const Model& m = ev.model();
   if (hansen_sengupta(ev, at, true, y, ws, true) != HsStatus::Ok) return false;
   for (size_t j = 0; j < m.pose.size(); ++j) at[m.pose[j]] = y[j];
   return true;
@@ -64,8 +68,11 @@ bool prove_command_witness(ModelEvaluator& ev, const BoxStore& R, double tau, Co
     at[v].set_point(q);
   }
   // f is 2π-periodic in the commands: q* serves box B as well as q* − 2πk would.
+  // The tests run from the cheapest, each on both boxes before the next.
   Box at_b = at;
-  return may_hold_zero(ev, R, w.a, at, ws) && may_hold_zero(ev, R, w.b, at_b, ws) &&
+  std::vector<Interval> y;
+  return image_holds_zero(ev, R, w.a, at, y) && image_holds_zero(ev, R, w.b, at_b, y) &&
+         contract_pose(ev, at, y, ws) && contract_pose(ev, at_b, y, ws) &&
          zero_in_box(ev, R, w.a, at, tau, w.xa, w.ca, ws) &&
          zero_in_box(ev, R, w.b, at_b, tau, w.xb, w.cb, ws);
 }

@@ -120,6 +120,28 @@ TEST(CommandWitnesses, CandidatesMeetInCommandsApartInPoses) {
   EXPECT_EQ(w.command_count, (std::vector<int64_t>{2, 0}));
 }
 
+// The proof attempts of a CSNC are at most max(attempts / 10, attempts_per_box × its
+// boxes): four boxes with the same commands and poses apart make six candidates, of which
+// a budget of one per box (floor 4) proves the first four in sweep order and says Capped;
+// two per box prove all six.
+TEST(CommandWitnesses, AttemptBudgetFollowsTheCsncSize) {
+  set_working_precision(53);
+  BoxStore R = boxes({{0, 1, 0, 1}, {2, 3, 0, 1}, {4, 5, 0, 1}, {6, 7, 0, 1}});
+  int offered = 0;
+  auto prove = [&](CommandWitness&) {
+    ++offered;
+    return false;
+  };
+  CuspidalWitnesses w;
+  find_command_witnesses(R, {0, 0, 0, 0}, 1, space(false, false), prove, w, 1000, 40, 1);
+  EXPECT_EQ(offered, 4);
+  EXPECT_EQ(w.command_search[0], WitnessSearch::Capped);
+  offered = 0;
+  find_command_witnesses(R, {0, 0, 0, 0}, 1, space(false, false), prove, w, 1000, 40, 2);
+  EXPECT_EQ(offered, 6);
+  EXPECT_EQ(w.command_search[0], WitnessSearch::Complete);
+}
+
 namespace {
 
 AspectsResult solve_text(const std::string& text, double eps) {
