@@ -15,23 +15,32 @@ bool Interval::from_string(Interval& out, const std::string& text) {
   return !out.empty();
 }
 
+// The ends are read in place: mpfi_get_left/right would copy them into a temporary,
+// an allocation per call in the innermost loops (8 % of the run time in a profile).
 double Interval::lo_down() const {
-  mpfr_t t;
-  mpfr_init2(t, mpfi_get_prec(v_));
-  mpfi_get_left(t, v_);
-  double d = mpfr_get_d(t, MPFR_RNDD);
-  mpfr_clear(t);
-  return d + 0.0;  // MPFI keeps signed zeros; report +0
+  return mpfr_get_d(&v_->left, MPFR_RNDD) + 0.0;  // MPFI keeps signed zeros; report +0
 }
 
 double Interval::hi_up() const {
-  mpfr_t t;
-  mpfr_init2(t, mpfi_get_prec(v_));
-  mpfi_get_right(t, v_);
-  double d = mpfr_get_d(t, MPFR_RNDU);
-  mpfr_clear(t);
-  return d + 0.0;  // MPFI stores a zero right end as -0; report +0
+  return mpfr_get_d(&v_->right, MPFR_RNDU) + 0.0;  // MPFI stores a zero right end as -0
 }
+
+namespace {
+
+// One MPFR temporary per thread, set to the precision asked (reallocated only when that
+// changes): the same results as a fresh one, without an allocation per call.
+mpfr_ptr scratch(mpfr_prec_t prec) {
+  struct Scratch {
+    mpfr_t t;
+    Scratch() { mpfr_init2(t, MPFR_PREC_MIN); }
+    ~Scratch() { mpfr_clear(t); }
+  };
+  thread_local Scratch s;
+  if (mpfr_get_prec(s.t) != prec) mpfr_set_prec(s.t, prec);
+  return s.t;
+}
+
+}  // namespace
 
 double Interval::mid() const {
   double lo = lo_down(), hi = hi_up();
@@ -57,12 +66,9 @@ double Interval::mid() const {
 }
 
 double Interval::width_up() const {
-  mpfr_t t;
-  mpfr_init2(t, mpfi_get_prec(v_));
+  mpfr_ptr t = scratch(mpfi_get_prec(v_));
   mpfi_diam_abs(t, v_);  // rounded up by MPFI
-  double d = mpfr_get_d(t, MPFR_RNDU);
-  mpfr_clear(t);
-  return d;
+  return mpfr_get_d(t, MPFR_RNDU);
 }
 
 bool Interval::strictly_contains(const Interval& o) const {
