@@ -1,7 +1,7 @@
 // eval.cpp — MPFI semantics of every node of the model language (statuses and modes in
 // eval.h). Unbounded or NaN results become the entire line with status 1. HC4 backward
 // steps intersect each child with a superset of its values compatible with the parent.
-#include "eval.h"
+#include "checker.h"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 // Besides syntax it enforces what the proofs rely on: a square system, and periodic
 // variables entering only through sin/cos of sums (so f is 2π-periodic in them and the
 // 2π shifts of links and of the neighbourhood graph are sound).
-#include "model.h"
+#include "checker.h"
 
 #include <gmpxx.h>
 
