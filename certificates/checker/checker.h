@@ -190,6 +190,8 @@ struct ModelError : std::runtime_error {
 
 // Parses the model language; throws ModelError("LINE:COL: message").
 Model parse_model(const std::string& text);
+// The nodes `roots` depend on, themselves included, in increasing id order.
+std::vector<int> closure(const Model& m, const std::vector<int>& roots);
 
 // True when the declared domain of v is exactly one period: both bounds are a·π + b with
 // exact rationals a, b (decimal literals, pi, +, -, and * or / by a rational) and
@@ -228,7 +230,6 @@ class Evaluator {
   // The value of a constant node (domain bounds); false if undefined or unbounded.
   bool constant(int id, Ival& out) const;
 
-  std::vector<int> closure(const std::vector<int>& roots) const;
   std::vector<int> all_eqs, all_atoms;           // program of every equation, of every atom
   std::vector<std::vector<int>> eq_prog, factor_prog;
   Ival two_pi;

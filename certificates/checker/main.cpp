@@ -1,6 +1,6 @@
 // main.cpp — `check_cert FILE.cert`: reads a certificate of `aspects solve` record by
 // record and re-verifies every claim with the checker's own parser, evaluator and proofs
-// (FORMAT.md is the specification; exit statuses in cert_reader.h). It keeps only what
+// (FORMAT.md is the specification; exit statuses in checker.h). It keeps only what
 // later sections need: the output boxes as doubles with their verified signs, the
 // union-find of verified links and the CSNC of each box.
 #include <algorithm>
@@ -26,8 +26,7 @@ bool within(double lo, double hi, double a, double b) { return lo <= a && b <= h
 bool inside(const Ival& y, double lo, double hi, bool strict) {
   const int a = mpfr_cmp_d(y.L(), lo);
   const int b = mpfr_cmp_d(y.R(), hi);
-  if (strict) return a > 0 && b < 0;
-  return a >= 0 && b <= 0;
+  return strict ? a > 0 && b < 0 : a >= 0 && b <= 0;
 }
 
 struct Checker {
@@ -36,9 +35,7 @@ struct Checker {
   Model m;
   std::unique_ptr<Evaluator> ev;
   std::unique_ptr<Prover> pr;
-  int n = 0;
-  int nv = 0;
-  int p = 0;
+  int n = 0, nv = 0, p = 0;    // equations, variables, factors
   int version = 0;             // 1: P2 without column weights (D = 1); 2: with DX, DQ
   std::vector<Ival> dlo, dhi;  // enclosures of the declared bounds
   std::vector<bool> periodic;
