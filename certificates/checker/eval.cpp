@@ -272,11 +272,8 @@ bool Evaluator::derive(int id) {
   const Ival& a = val_[n.a];
   const Ival& b = n.b >= 0 ? val_[n.b] : a;
   const Ival& r = val_[id];
-  bool unary = true;
+  const bool unary = n.b < 0;
   switch (n.op) {
-    case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Min: case Op::Max:
-      unary = false;
-      break;
     case Op::Neg: mpfi_set_si(g_, -1); break;
     case Op::Sqr: mpfi_mul_si(g_, a, 2); break;
     case Op::Pow:
@@ -317,7 +314,7 @@ bool Evaluator::derive(int id) {
       mpfi_add_si(g_, g_, 1);
       mpfi_inv(g_, g_);
       break;
-    case Op::Const: case Op::Pi: case Op::Var: return true;
+    default: break;  // binary: below; constants and variables: above
   }
   for (int v = 0; v < nv; ++v) {
     if (!(need >> v & 1)) continue;

@@ -19,6 +19,12 @@ namespace {
 
 using Box = std::vector<double>;  // lo/hi pairs, one per variable (or per command)
 
+// Variable (or command) i of box b := [lo, hi].
+void put(Box& b, int i, double lo, double hi) {
+  b[2 * i] = lo;
+  b[2 * i + 1] = hi;
+}
+
 // lo <= a and b <= hi: [a, b] inside [lo, hi], on exact doubles.
 bool within(double lo, double hi, double a, double b) { return lo <= a && b <= hi; }
 
@@ -274,15 +280,13 @@ struct Checker {
     const double hi = cell[2 * v + 1];
     if (!within(lo, hi, lh[0], lh[1])) reject("contraction is not inside the cell");
     Box slab = cell;
-    slab[2 * v + 1] = lh[0];
+    put(slab, v, lo, lh[0]);
     if (lh[0] > lo && !refutes(slab))
       reject("cannot refute the slab below the contraction" + show(slab));
-    slab[2 * v] = lh[1];
-    slab[2 * v + 1] = hi;
+    put(slab, v, lh[1], hi);
     if (lh[1] < hi && !refutes(slab))
       reject("cannot refute the slab above the contraction" + show(slab));
-    cell[2 * v] = lh[0];
-    cell[2 * v + 1] = lh[1];
+    put(cell, v, lh[0], lh[1]);
   }
 
   void bisection(Box& cell, std::vector<Box>& stack) {
@@ -374,8 +378,7 @@ struct Checker {
       if (!within(qlo, qhi, img[2 * j], img[2 * j + 1])) reject("IMAGE is not inside Q~");
       if (!periodic[v] && !within_domain(v, img[2 * j], img[2 * j + 1]))
         reject("IMAGE leaves the declared domain of " + m.vars[v].name);
-      B[2 * v] = img[2 * j];
-      B[2 * v + 1] = img[2 * j + 1];
+      put(B, v, img[2 * j], img[2 * j + 1]);
     }
     // Each non-periodic pose variable must meet the declared domain (a periodic one does,
     // modulo 2π): a box outside it may not count for the bound.
@@ -486,10 +489,8 @@ struct Checker {
       const int v = m.pose[j];
       if (!within(X[2 * v], X[2 * v + 1], w[j], w[j]))
         reject("witness outside the boxes' intersection");
-      X[2 * v] = w[j];
-      X[2 * v + 1] = w[j];
-      commands[2 * j] = X[2 * m.command[j]];
-      commands[2 * j + 1] = X[2 * m.command[j] + 1];
+      put(X, v, w[j], w[j]);
+      put(commands, j, X[2 * m.command[j]], X[2 * m.command[j] + 1]);
     }
     pr->load(X.data());
     unique_zero("P3", Q, C, commands, "the command is not in both boxes");
@@ -576,8 +577,7 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
       const int v = m.command[j];
       const std::pair<double, double> I = inner(a, b, v, k[v]);
       if (!within(I.first, I.second, q[j], q[j])) reject("q* is not in both boxes' commands");
-      X[2 * v] = q[j];
-      X[2 * v + 1] = q[j];
+      put(X, v, q[j], q[j]);
     }
     for (long id : {a, b}) {
       const Box Xt = rd.intervals(n);
@@ -587,8 +587,7 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
         const int v = m.pose[j];
         if (!periodic[v] && !within_domain(v, Xt[2 * j], Xt[2 * j + 1]))
           reject("x~ leaves the declared domain of " + m.vars[v].name);
-        poses[2 * j] = R.box(id)[2 * v];
-        poses[2 * j + 1] = R.box(id)[2 * v + 1];
+        put(poses, j, R.box(id)[2 * v], R.box(id)[2 * v + 1]);
       }
       pr->load(X.data());
       unique_zero("assembly", Xt, C, poses, "the pose is not in the box", true);
