@@ -94,12 +94,11 @@ void Prover::dot(Ival& out, const double* C, const Ival* const* x) {
 
 void Prover::product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out) {
   std::vector<const Ival*> column(n_);
-  for (int i = 0; i < n_; ++i) {
+  for (int i = 0; i < n_; ++i)
     for (int j = 0; j < n_; ++j) {
       for (int k = 0; k < n_; ++k) column[k] = &J[k * n_ + j];
       dot(out[i * n_ + j], C + i * n_, column.data());
     }
-  }
 }
 
 // b_ := C·f with f the values of the equations just evaluated.
@@ -130,8 +129,7 @@ void Prover::read_jacobian(const std::vector<int>& cols, std::vector<Ival>& J) {
 
 const char* Prover::newton(const double* Q, const double* C, bool pose) {
   const std::vector<int>& u = pose ? m_.pose : m_.command;  // the unknowns
-  std::vector<Ival> X(n_);
-  std::vector<Ival> c(n_);
+  std::vector<Ival> X(n_), c(n_);  // the unknowns' box and centre
   w_ = box;
   for (int j = 0; j < n_; ++j) {
     X[j].set(Q[2 * j], Q[2 * j + 1]);
@@ -217,13 +215,11 @@ bool Prover::factor(const Factor& f, bool jac, Ival& out) {
 int Prover::hs_contract(std::vector<Ival>& b) {
   if (!ev_.eval_ad(ev_.all_eqs, b.data(), cmd_mask_)) return 0;  // f must be C¹ on b
   read_jacobian(m_.command, Jq_);
-  std::vector<double> M(size_t(n_) * n_);
-  std::vector<double> C;
+  std::vector<double> M(size_t(n_) * n_), C;  // mid(Fq), its approximate inverse
   for (size_t k = 0; k < M.size(); ++k) M[k] = 0.5 * (Jq_[k].lo() + Jq_[k].hi());
   if (!invert(M, n_, C)) return 0;
   product(Jq_, C.data(), A_);
-  std::vector<Ival> X(n_);
-  std::vector<Ival> c(n_);
+  std::vector<Ival> X(n_), c(n_);
   w_ = b;
   for (int j = 0; j < n_; ++j) {  // the centre: the MPFR midpoint, a point of b
     X[j] = b[m_.command[j]];
