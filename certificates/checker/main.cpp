@@ -345,12 +345,9 @@ struct Checker {
     const std::vector<double> C = rd.reals(nn);
     const std::vector<double> CX = rd.reals(nn);
     const std::vector<double> CQ = rd.reals(nn);
-    std::vector<double> DX(n, 1.0);  // version 1: unscaled dominance
-    std::vector<double> DQ(n, 1.0);
-    if (version == 2) {
-      DX = rd.reals(n);
-      DQ = rd.reals(n);
-    }
+    const std::vector<double> ones(n, 1.0);  // version 1: unscaled dominance
+    const std::vector<double> DX = version == 1 ? ones : rd.reals(n);
+    const std::vector<double> DQ = version == 1 ? ones : rd.reals(n);
     for (int j = 0; j < n; ++j)
       if (!(DX[j] > 0) || !(DQ[j] > 0)) reject("P2: a column weight is not positive");
     const Box B = solution_box(cell, Q, img);
@@ -406,8 +403,7 @@ struct Checker {
     bool ok = s.size() == size_t(p) && s.find_first_not_of("+-0") == s.npos;
     if (p == 0) ok = s == ".";  // SIGNS: p characters of "+-0", or "." when there is no factor
     if (!ok) malformed(rec(), "bad SIGNS field '" + std::string(s) + "'");
-    uint32_t pos = 0;
-    uint32_t neg = 0;
+    uint32_t pos = 0, neg = 0;
     Ival val;
     for (int i = 0; i < p; ++i) {
       if (s[i] == '0') continue;
@@ -731,16 +727,10 @@ namespace {
 std::string quoted(const std::string& s) {
   std::string q = "\"";
   for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      q += '\\';
-      q += char(c);
-    } else if (c < 0x20 || c >= 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      q += buf;
-    } else {
-      q += char(c);
-    }
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+    if (c == '"' || c == '\\') q += '\\';
+    q += c < 0x20 || c >= 0x7f ? std::string(buf) : std::string(1, char(c));
   }
   return q + "\"";
 }
