@@ -38,14 +38,9 @@ std::vector<Token> lex(const std::string& s) {
   std::vector<Token> out;
   int depth = 0, line = 1, col = 1;
   size_t i = 0;
-  auto adv = [&]() {
-    if (s[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
+  auto adv = [&]() {  // one byte other than '\n' (only the newline branch consumes those)
     ++i;
+    ++col;
   };
   auto digit = [&](size_t k) { return k < s.size() && std::isdigit((unsigned char)s[k]); };
   while (i < s.size()) {
@@ -56,7 +51,9 @@ std::vector<Token> lex(const std::string& s) {
       while (i < s.size() && s[i] != '\n') adv();
     } else if (c == '\n') {
       if (depth == 0) out.push_back({Tok::Newline, "end of line", l, co});
-      adv();
+      ++i;
+      ++line;
+      col = 1;
     } else if (c == ' ' || c == '\t' || c == '\r') {
       adv();
     } else if (std::isalpha((unsigned char)c) || c == '_') {
