@@ -9,8 +9,7 @@
 #include <random>
 #include <sstream>
 
-#include "../certificates/checker/eval.h"
-#include "../certificates/checker/model.h"
+#include "../certificates/checker/checker.h"
 #include "model_eval.h"
 
 namespace {

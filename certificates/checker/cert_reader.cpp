@@ -1,7 +1,7 @@
 // cert_reader.cpp — the lexical layer of the certificate: reads the file line by line with
 // getline(3), feeds every byte to a SHA-256 context, and refuses anything that is not
 // exactly in the canonical form of FORMAT.md.
-#include "cert_reader.h"
+#include "checker.h"
 
 #include <cmath>
 #include <cstdlib>

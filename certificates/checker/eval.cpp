@@ -1,14 +1,14 @@
 // eval.cpp — MPFI semantics of every node of the model language (statuses and modes in
-// eval.h). Unbounded or NaN results become the entire line with status 1. HC4 backward
+// checker.h). Unbounded or NaN results become the entire line with status 1. HC4 backward
 // steps intersect each child with a superset of its values compatible with the parent.
-#include "eval.h"
+#include "checker.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace cc {
 
-static bool is_zero(const Ival& x) { return mpfr_zero_p(x.L()) && mpfr_zero_p(x.R()); }
+
 // The status of a variable's interval: 2 empty, 0 bounded, 1 unbounded.
 static int var_status(const Ival& x) {
   if (x.empty()) return 2;
@@ -18,7 +18,7 @@ static int var_status(const Ival& x) {
 // A divisor (or the base of a negative power) that contains 0: the result is defined nowhere
 // when it is [0, 0] (status 2), else nothing is known of it (the entire line, status 1).
 static int pole(Ival& r, const Ival& d) {
-  if (is_zero(d)) return 2;
+  if (mpfr_zero_p(d.L()) && mpfr_zero_p(d.R())) return 2;
   r.entire();
   return 1;
 }
@@ -44,25 +44,10 @@ Evaluator::Evaluator(const Model& m) : m_(m) {
     cstat_[id] = st;
     if (st < 2) cstat_[id] = std::max(st, apply(int(id), cval_[id], a, b));
   }
-  all_eqs = closure(m.eqs);
-  all_atoms = closure(m.atoms);
-  for (int e : m.eqs) eq_prog.push_back(closure({e}));
-  for (int f : m.factors) factor_prog.push_back(closure({f}));
-}
-
-std::vector<int> Evaluator::closure(const std::vector<int>& roots) const {
-  std::vector<char> need(m_.nodes.size(), 0);
-  for (int r : roots) need[r] = 1;
-  std::vector<int> out;
-  for (int id = int(need.size()) - 1; id >= 0; --id) {
-    if (!need[id]) continue;
-    const Node& n = m_.nodes[id];
-    if (n.a >= 0) need[n.a] = 1;
-    if (n.b >= 0) need[n.b] = 1;
-    out.push_back(id);
-  }
-  std::reverse(out.begin(), out.end());
-  return out;
+  all_eqs = closure(m, m.eqs);
+  all_atoms = closure(m, m.atoms);
+  for (int e : m.eqs) eq_prog.push_back(closure(m, {e}));
+  for (int f : m.factors) factor_prog.push_back(closure(m, {f}));
 }
 
 bool Evaluator::constant(int id, Ival& out) const {
@@ -176,16 +161,12 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
       if (n.k < 0 && a->has_zero()) return pole(r, *a);
       power(r, *a, n.k);
       break;
-    case Op::Sqrt:
+    case Op::Sqrt:  // on a ∩ [0, +inf]
       if (mpfr_sgn(a->R()) < 0) return 2;
-      if (mpfr_sgn(a->L()) < 0) {  // evaluate on a ∩ [0, +inf]
-        mpfr_set_zero(t1_.L(), 1);
-        mpfr_set(t1_.R(), a->R(), MPFR_RNDU);
-        mpfi_sqrt(r, t1_);
-        st = 1;
-      } else {
-        mpfi_sqrt(r, *a);
-      }
+      st = mpfr_sgn(a->L()) < 0;
+      mpfi_set(t1_, *a);
+      if (st) mpfr_set_zero(t1_.L(), 1);
+      mpfi_sqrt(r, t1_);
       break;
     case Op::Log:
       if (mpfr_sgn(a->R()) <= 0) return 2;
@@ -291,11 +272,8 @@ bool Evaluator::derive(int id) {
   const Ival& a = val_[n.a];
   const Ival& b = n.b >= 0 ? val_[n.b] : a;
   const Ival& r = val_[id];
-  bool unary = true;
+  const bool unary = n.b < 0;
   switch (n.op) {
-    case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Min: case Op::Max:
-      unary = false;
-      break;
     case Op::Neg: mpfi_set_si(g_, -1); break;
     case Op::Sqr: mpfi_mul_si(g_, a, 2); break;
     case Op::Pow:
@@ -336,7 +314,7 @@ bool Evaluator::derive(int id) {
       mpfi_add_si(g_, g_, 1);
       mpfi_inv(g_, g_);
       break;
-    case Op::Const: case Op::Pi: case Op::Var: return true;
+    default: break;  // binary: below; constants and variables: above
   }
   for (int v = 0; v < nv; ++v) {
     if (!(need >> v & 1)) continue;

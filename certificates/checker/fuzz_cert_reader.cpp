@@ -4,10 +4,7 @@
 // of the model text almost never keep `model BYTES SHA256` right, so when the input has
 // that record and an `end-model` line, the harness first makes it consistent: the parser
 // and the proofs then see mutated models too.
-#include <cstdint>
-#include <cstdio>
-
-#include "cert_reader.h"
+#include "checker.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string s(reinterpret_cast<const char*>(data), size);

@@ -2,12 +2,11 @@
 // O(N²), and not 3^(periodic variables) copies: only the sweep dimension is shifted, the
 // other variables are tested shift by shift), the sign-separated lower bound and the
 // filtering rule.
-#include "graph.h"
+#include "checker.h"
 
 #include <algorithm>
 #include <array>
 #include <numeric>
-#include <stdexcept>
 
 namespace cc {
 

@@ -1,26 +1,29 @@
 // main.cpp — `check_cert FILE.cert`: reads a certificate of `aspects solve` record by
 // record and re-verifies every claim with the checker's own parser, evaluator and proofs
-// (FORMAT.md is the specification; exit statuses in cert_reader.h). It keeps only what
+// (FORMAT.md is the specification; exit statuses in checker.h). It keeps only what
 // later sections need: the output boxes as doubles with their verified signs, the
 // union-find of verified links and the CSNC of each box.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <cstdio>
 #include <memory>
 #include <new>
 #include <tuple>
 
-#include "cert_reader.h"
-#include "graph.h"
-#include "proofs.h"
+#include "checker.h"
 
 using namespace cc;
 
 namespace {
 
 using Box = std::vector<double>;  // lo/hi pairs, one per variable (or per command)
+
+// Variable (or command) i of box b := [lo, hi].
+void put(Box& b, int i, double lo, double hi) {
+  b[2 * i] = lo;
+  b[2 * i + 1] = hi;
+}
 
 // lo <= a and b <= hi: [a, b] inside [lo, hi], on exact doubles.
 bool within(double lo, double hi, double a, double b) { return lo <= a && b <= hi; }
@@ -29,17 +32,7 @@ bool within(double lo, double hi, double a, double b) { return lo <= a && b <= h
 bool inside(const Ival& y, double lo, double hi, bool strict) {
   const int a = mpfr_cmp_d(y.L(), lo);
   const int b = mpfr_cmp_d(y.R(), hi);
-  if (strict) return a > 0 && b < 0;
-  return a >= 0 && b <= 0;
-}
-
-// The kind a factor record names; an unknown name reads as User and is refused by the caller.
-Factor::Kind factor_kind(std::string_view k) {
-  if (k == "detFx") return Factor::DetFx;
-  if (k == "detFq") return Factor::DetFq;
-  if (k == "diagFx") return Factor::DiagFx;
-  if (k == "diagFq") return Factor::DiagFq;
-  return Factor::User;
+  return strict ? a > 0 && b < 0 : a >= 0 && b <= 0;
 }
 
 struct Checker {
@@ -48,9 +41,7 @@ struct Checker {
   Model m;
   std::unique_ptr<Evaluator> ev;
   std::unique_ptr<Prover> pr;
-  int n = 0;
-  int nv = 0;
-  int p = 0;
+  int n = 0, nv = 0, p = 0;    // equations, variables, factors
   int version = 0;             // 1: P2 without column weights (D = 1); 2: with DX, DQ
   std::vector<Ival> dlo, dhi;  // enclosures of the declared bounds
   std::vector<bool> periodic;
@@ -121,636 +112,583 @@ struct Checker {
     return s + ")";
   }
 
-  void header();
-  void read_model();
-  void read_bounds(long model_rec);
-  void read_domain();
-  Factor read_factor();
-  void require_triangular(Factor::Kind kind, std::string_view name);
-  void tree();
-  void contraction(Box& cell);
-  void outcome(Box& cell, std::vector<Box>& stack);
-  void bisection(Box& cell, std::vector<Box>& stack);
-  void discard(const Box& cell);
-  void leaf(const Box& cell);
-  void solution_leaf(const Box& cell);
-  Box solution_box(const Box& cell, const Box& Q, const Box& img);
-  void unique_zero(const std::string& claim, const Box& Q, const std::vector<double>& C,
-                   const Box& target, const std::string& outside, bool pose = false);
-  void store(std::string_view signs, bool jac, const double* box, bool solution);
-  template <class Record>
-  void section(const char* head, const char* kind, Record record);
-  std::vector<int> shifts();
-  std::pair<double, double> inner(long a, long b, int v, int k);
-  void link();
-  void csnc(int64_t k);
-  void pair_in_csnc(long c, long a, long b);
-  void witness();
-  void assembly();
-  bool apart(long a, long b, int v);
-  size_t claims(const CheckOptions& o);
-  void run(const CheckOptions& o);
-};
-
-void Checker::header() {
-  rd.next();
-  if (rd.size() != 2 || rd.kind() != "aspects-certificate")
-    malformed(rec(), "not an aspects certificate");
-  const std::string_view v = rd.word();
-  if (v != "1" && v != "2")
-    malformed(rec(), "unknown certificate version '" + std::string(v) + "'");
-  version = v == "1" ? 1 : 2;
-  rd.expect({"tool", "aspects"}, 1);  // the writer's version: free text (FORMAT.md)
-  read_model();
-  read_domain();
-  const int64_t count = rd.expect({"factors"}, 1).integer();
-  if (count < 0 || count > 20) reject("number of factors out of range 0..20");
-  p = int(count);
-  for (int i = 0; i < p; ++i) factors.push_back(read_factor());
-  rd.expect({"tree"}, 0);
-  R.nv = nv;
-}
-
-// The model record, its text, the precision and the declared bounds.
-void Checker::read_model() {
-  rd.expect({"model"}, 2);
-  const long model_rec = rec();
-  const int64_t bytes = rd.integer();
-  const std::string sha(rd.word());
-  if (bytes < 0 || bytes > (1 << 20)) malformed(rec(), "model size out of range");
-  if (sha.size() != 64 || sha.find_first_not_of("0123456789abcdef") != std::string::npos)
-    malformed(rec(), "bad SHA-256 field");
-  const std::string text = rd.raw(size_t(bytes));
-  rd.expect({"end-model"}, 0);
-  out.model_sha = sha256_hex(text);
-  if (out.model_sha != sha) rejected(model_rec, "SHA-256 of the embedded model does not match");
-  const int64_t prec = rd.expect({"precision"}, 1).integer();
-  if (prec < 24 || prec > 4096) malformed(rec(), "precision out of range 24..4096");
-  mpfr_set_default_prec(mpfr_prec_t(prec));
-  try {
-    m = parse_model(text);
-    // A limit of the checker, not of the format: the evaluator keeps about nodes·(variables
-    // + 5) intervals of `prec` bits (and MPFR aborts when out of memory).
-    const double nodes = double(m.nodes.size());
-    if (nodes * double(m.vars.size() + 5) * double(prec / 64 + 2) > double(1 << 22))
-      rejected(model_rec, "the embedded model is too large for the checker at this precision");
-    ev.reset(new Evaluator(m));
-  } catch (const ModelError& e) {
-    malformed(model_rec, std::string("embedded model: ") + e.what());
+  void header() {
+    rd.next();
+    if (rd.size() != 2 || rd.kind() != "aspects-certificate")
+      malformed(rec(), "not an aspects certificate");
+    const std::string_view v = rd.word();
+    if (v != "1" && v != "2")
+      malformed(rec(), "unknown certificate version '" + std::string(v) + "'");
+    version = v == "1" ? 1 : 2;
+    rd.expect({"tool", "aspects"}, 1);  // the writer's version: free text (FORMAT.md)
+    read_model();
+    read_domain();
+    const int64_t count = rd.expect({"factors"}, 1).integer();
+    if (count < 0 || count > 20) reject("number of factors out of range 0..20");
+    p = int(count);
+    for (int i = 0; i < p; ++i) factors.push_back(read_factor());
+    rd.expect({"tree"}, 0);
+    R.nv = nv;
   }
-  pr.reset(new Prover(*ev));
-  n = m.n();
-  nv = int(m.vars.size());
-  out.robot = m.name;
-  read_bounds(model_rec);
-}
 
-// The declared domain of every variable, enclosed at the certificate's precision.
-void Checker::read_bounds(long model_rec) {
-  dlo.resize(nv);
-  dhi.resize(nv);
-  for (int v = 0; v < nv; ++v) {
-    const Var& x = m.vars[v];
-    const std::string what = "embedded model: ";
-    if (!ev->constant(x.lo, dlo[v]) || !ev->constant(x.hi, dhi[v]))
-      malformed(model_rec, what + "domain bound of '" + x.name + "' is not a finite number");
-    const bool reversed = mpfr_cmp(dlo[v].L(), dhi[v].R()) > 0;
-    if (reversed || mpfr_cmp(dlo[v].R(), dhi[v].L()) > 0)
-      malformed(model_rec, what + "empty or reversed domain of '" + x.name + "'");
-    // Exactly, not by intervals: `[-3.1415926, 3.1415926] periodic` passes an interval test
-    // at 24 bits (and a longer decimal at any precision) and leaves a gap at the seam.
-    if (x.periodic && !exactly_one_period(m, x))
-      malformed(model_rec, what + "periodic domain of '" + x.name +
-                               "' is not one period (exactly: a*pi + b, rational a, b)");
-    periodic.push_back(x.periodic);
+  // The model record, its text, the precision and the declared bounds.
+  void read_model() {
+    rd.expect({"model"}, 2);
+    const long model_rec = rec();
+    const int64_t bytes = rd.integer();
+    const std::string sha(rd.word());
+    if (bytes < 0 || bytes > (1 << 20)) malformed(rec(), "model size out of range");
+    if (sha.size() != 64 || sha.find_first_not_of("0123456789abcdef") != std::string::npos)
+      malformed(rec(), "bad SHA-256 field");
+    const std::string text = rd.raw(size_t(bytes));
+    rd.expect({"end-model"}, 0);
+    out.model_sha = sha256_hex(text);
+    if (out.model_sha != sha) rejected(model_rec, "SHA-256 of the embedded model does not match");
+    const int64_t prec = rd.expect({"precision"}, 1).integer();
+    if (prec < 24 || prec > 4096) malformed(rec(), "precision out of range 24..4096");
+    mpfr_set_default_prec(mpfr_prec_t(prec));
+    try {
+      m = parse_model(text);
+      // A limit of the checker, not of the format: the evaluator keeps about nodes·(variables
+      // + 5) intervals of `prec` bits (and MPFR aborts when out of memory).
+      const double nodes = double(m.nodes.size());
+      if (nodes * double(m.vars.size() + 5) * double(prec / 64 + 2) > double(1 << 22))
+        rejected(model_rec, "the embedded model is too large for the checker at this precision");
+      ev.reset(new Evaluator(m));
+    } catch (const ModelError& e) {
+      malformed(model_rec, std::string("embedded model: ") + e.what());
+    }
+    pr.reset(new Prover(*ev));
+    n = m.n();
+    nv = int(m.vars.size());
+    out.robot = m.name;
+    read_bounds(model_rec);
   }
-}
 
-// tau and eps (range only: informational) and the root cell.
-void Checker::read_domain() {
-  if (!(rd.expect({"tau"}, 1).real() >= 1)) malformed(rec(), "tau must be >= 1");
-  if (!(rd.expect({"eps"}, 1).real() > 0)) malformed(rec(), "eps must be > 0");
-  root = rd.expect({"domain"}, 2 * size_t(nv)).intervals(nv);
-  for (int v = 0; v < nv; ++v) {
-    const std::string& name = m.vars[v].name;
-    // The root cell is the declared domain rounded outward to doubles, nothing more: it
-    // covers every configuration, and it cannot hold boxes of another (wider) domain.
-    if (root[2 * v] != dlo[v].lo() || root[2 * v + 1] != dhi[v].hi())
-      reject("root cell is not the declared domain of '" + name + "' rounded outward to doubles");
-    if (periodic[v] && !spans_period(root[2 * v], root[2 * v + 1]))
-      reject("root cell of periodic '" + name + "' does not provably span 2*pi");
-  }
-}
-
-// factor KIND [ARG]: detFx, detFq, diagFx i, diagFq i (1-based entry), user k (1-based).
-Factor Checker::read_factor() {
-  rd.next();
-  const std::string_view k = rd.size() > 1 ? rd.word() : std::string_view();
-  const bool with_arg = k == "diagFx" || k == "diagFq" || k == "user";
-  if (rd.kind() != "factor" || rd.size() != (with_arg ? 3u : 2u))
-    malformed(rec(), "expected 'factor KIND [ARG]'");
-  if (!with_arg && k != "detFx" && k != "detFq")
-    malformed(rec(), "unknown factor kind '" + std::string(k) + "'");
-  Factor fa{factor_kind(k), 0};
-  if (with_arg) {
-    const size_t entries = fa.kind == Factor::User ? m.factors.size() : size_t(n);
-    fa.arg = int(index(1 + entries)) - 1;
-  }
-  if (fa.arg < 0) reject("factor indices are 1-based");
-  if (fa.kind == Factor::User) out.user_factors = true;
-  if (fa.kind == Factor::DiagFx || fa.kind == Factor::DiagFq) require_triangular(fa.kind, k);
-  return fa;
-}
-
-// det = product of the diagonal needs every entry above, or every entry below, the diagonal
-// to be structurally zero (equation r does not mention variable c).
-void Checker::require_triangular(Factor::Kind kind, std::string_view name) {
-  const std::vector<int>& cols = kind == Factor::DiagFx ? m.pose : m.command;
-  bool upper_zero = true;
-  bool lower_zero = true;
-  for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) {
-      if (!(m.nodes[m.eqs[r]].dep >> cols[c] & 1)) continue;
-      upper_zero = upper_zero && c <= r;
-      lower_zero = lower_zero && c >= r;
+  // The declared domain of every variable, enclosed at the certificate's precision.
+  void read_bounds(long model_rec) {
+    dlo.resize(nv);
+    dhi.resize(nv);
+    for (int v = 0; v < nv; ++v) {
+      const Var& x = m.vars[v];
+      const std::string what = "embedded model: ";
+      if (!ev->constant(x.lo, dlo[v]) || !ev->constant(x.hi, dhi[v]))
+        malformed(model_rec, what + "domain bound of '" + x.name + "' is not a finite number");
+      const bool reversed = mpfr_cmp(dlo[v].L(), dhi[v].R()) > 0;
+      if (reversed || mpfr_cmp(dlo[v].R(), dhi[v].L()) > 0)
+        malformed(model_rec, what + "empty or reversed domain of '" + x.name + "'");
+      // Exactly, not by intervals: `[-3.1415926, 3.1415926] periodic` passes an interval test
+      // at 24 bits (and a longer decimal at any precision) and leaves a gap at the seam.
+      if (x.periodic && !exactly_one_period(m, x))
+        malformed(model_rec, what + "periodic domain of '" + x.name +
+                                 "' is not one period (exactly: a*pi + b, rational a, b)");
+      periodic.push_back(x.periodic);
     }
   }
-  if (!upper_zero && !lower_zero)
-    reject(std::string(name) + ": the matrix is not structurally triangular");
-}
 
-// The search tree in depth-first preorder: a stack of cells, left child on top.
-void Checker::tree() {
-  std::vector<Box> stack{root};
-  for (;;) {
-    next_record();
-    if (rd.kind() == "end-tree") break;
-    if (stack.empty()) malformed(rec(), "expected 'end-tree': the search tree is complete");
-    Box cell = std::move(stack.back());
-    stack.pop_back();
-    while (rd.kind() == "P") {
-      contraction(cell);
+  // tau and eps (range only: informational) and the root cell.
+  void read_domain() {
+    if (!(rd.expect({"tau"}, 1).real() >= 1)) malformed(rec(), "tau must be >= 1");
+    if (!(rd.expect({"eps"}, 1).real() > 0)) malformed(rec(), "eps must be > 0");
+    root = rd.expect({"domain"}, 2 * size_t(nv)).intervals(nv);
+    for (int v = 0; v < nv; ++v) {
+      const std::string& name = m.vars[v].name;
+      // The root cell is the declared domain rounded outward to doubles, nothing more: it
+      // covers every configuration, and it cannot hold boxes of another (wider) domain.
+      if (root[2 * v] != dlo[v].lo() || root[2 * v + 1] != dhi[v].hi())
+        reject("root cell is not the declared domain of '" + name + "' rounded outward to doubles");
+      if (periodic[v] && !spans_period(root[2 * v], root[2 * v + 1]))
+        reject("root cell of periodic '" + name + "' does not provably span 2*pi");
+    }
+  }
+
+  // factor KIND [ARG]: detFx, detFq, diagFx i, diagFq i (1-based entry), user k (1-based).
+  Factor read_factor() {
+    static const std::string_view kinds[] = {"detFx", "detFq", "diagFx", "diagFq", "user"};
+    rd.next();
+    const std::string_view k = rd.size() > 1 ? rd.word() : std::string_view();
+    const long kind = std::find(kinds, kinds + 5, k) - kinds;  // in Factor::Kind order; 5: none
+    const bool with_arg = kind >= Factor::DiagFx && kind <= Factor::User;
+    if (rd.kind() != "factor" || rd.size() != (with_arg ? 3u : 2u))
+      malformed(rec(), "expected 'factor KIND [ARG]'");
+    if (kind == 5) malformed(rec(), "unknown factor kind '" + std::string(k) + "'");
+    Factor fa{Factor::Kind(kind), 0};
+    if (with_arg) {
+      const size_t entries = fa.kind == Factor::User ? m.factors.size() : size_t(n);
+      fa.arg = int(index(1 + entries)) - 1;
+    }
+    if (fa.arg < 0) reject("factor indices are 1-based");
+    if (fa.kind == Factor::User) out.user_factors = true;
+    if (fa.kind == Factor::DiagFx || fa.kind == Factor::DiagFq) require_triangular(fa.kind, k);
+    return fa;
+  }
+
+  // det = product of the diagonal needs every entry above, or every entry below, the diagonal
+  // to be structurally zero (equation r does not mention variable c).
+  void require_triangular(Factor::Kind kind, std::string_view name) {
+    const std::vector<int>& cols = kind == Factor::DiagFx ? m.pose : m.command;
+    bool upper_zero = true;
+    bool lower_zero = true;
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        if (!(m.nodes[m.eqs[r]].dep >> cols[c] & 1)) continue;
+        upper_zero = upper_zero && c <= r;
+        lower_zero = lower_zero && c >= r;
+      }
+    if (!upper_zero && !lower_zero)
+      reject(std::string(name) + ": the matrix is not structurally triangular");
+  }
+
+  // The search tree in depth-first preorder: a stack of cells, left child on top.
+  void tree() {
+    std::vector<Box> stack{root};
+    for (;;) {
       next_record();
+      if (rd.kind() == "end-tree") break;
+      if (stack.empty()) malformed(rec(), "expected 'end-tree': the search tree is complete");
+      Box cell = std::move(stack.back());
+      stack.pop_back();
+      while (rd.kind() == "P") {
+        contraction(cell);
+        next_record();
+      }
+      const std::string k(rd.kind());
+      if (k == "B") {
+        bisection(cell, stack);
+      } else if (k == "X") {
+        discard(cell);
+      } else if (k == "U" || k == "S" || k == "N") {
+        leaf(cell);
+      } else if (k == "end-tree") {
+        malformed(rec(), "node without an outcome record");
+      } else {
+        malformed(rec(), "unknown record type '" + k + "'");
+      }
     }
-    outcome(cell, stack);
+    rd.count(2);
+    if (!stack.empty())
+      reject("the search tree leaves " + std::to_string(stack.size()) + " cell(s) uncovered");
+    if (rd.integer() != int64_t(R.size())) reject("end-tree: wrong number of leaves");
   }
-  rd.count(2);
-  if (!stack.empty())
-    reject("the search tree leaves " + std::to_string(stack.size()) + " cell(s) uncovered");
-  if (rd.integer() != int64_t(R.size())) reject("end-tree: wrong number of leaves");
-}
 
-// P: refutes both closed slabs outside [LO, HI], then narrows the cell to it.
-void Checker::contraction(Box& cell) {
-  rd.count(4);
-  const long v = index(nv);
-  const Box lh = rd.intervals(1);
-  const double lo = cell[2 * v];
-  const double hi = cell[2 * v + 1];
-  if (!within(lo, hi, lh[0], lh[1])) reject("contraction is not inside the cell");
-  Box slab = cell;
-  slab[2 * v + 1] = lh[0];
-  if (lh[0] > lo && !refutes(slab))
-    reject("cannot refute the slab below the contraction" + show(slab));
-  slab[2 * v] = lh[1];
-  slab[2 * v + 1] = hi;
-  if (lh[1] < hi && !refutes(slab))
-    reject("cannot refute the slab above the contraction" + show(slab));
-  cell[2 * v] = lh[0];
-  cell[2 * v + 1] = lh[1];
-}
-
-void Checker::outcome(Box& cell, std::vector<Box>& stack) {
-  const std::string k(rd.kind());
-  if (k == "B") {
-    bisection(cell, stack);
-  } else if (k == "X") {
-    discard(cell);
-  } else if (k == "U" || k == "S" || k == "N") {
-    leaf(cell);
-  } else if (k == "end-tree") {
-    malformed(rec(), "node without an outcome record");
-  } else {
-    malformed(rec(), "unknown record type '" + k + "'");
+  // P: refutes both closed slabs outside [LO, HI], then narrows the cell to it.
+  void contraction(Box& cell) {
+    rd.count(4);
+    const long v = index(nv);
+    const Box lh = rd.intervals(1);
+    const double lo = cell[2 * v];
+    const double hi = cell[2 * v + 1];
+    if (!within(lo, hi, lh[0], lh[1])) reject("contraction is not inside the cell");
+    Box slab = cell;
+    put(slab, v, lo, lh[0]);
+    if (lh[0] > lo && !refutes(slab))
+      reject("cannot refute the slab below the contraction" + show(slab));
+    put(slab, v, lh[1], hi);
+    if (lh[1] < hi && !refutes(slab))
+      reject("cannot refute the slab above the contraction" + show(slab));
+    put(cell, v, lh[0], lh[1]);
   }
-}
 
-void Checker::bisection(Box& cell, std::vector<Box>& stack) {
-  rd.count(3);
-  const long v = index(nv);
-  const double x = rd.real();
-  if (!(cell[2 * v] < x && x < cell[2 * v + 1]))
-    reject("bisection point not strictly inside the cell");
-  stack.push_back(cell);
-  stack.back()[2 * v] = x;  // right child below, left child on top
-  cell[2 * v + 1] = x;
-  stack.push_back(std::move(cell));
-}
-
-// X: the cell holds no feasible solution. The checker runs its whole refutation procedure
-// whatever the hint says, so the hint is a label: its form (hs, eq<i>, c<k>, canonical
-// indices) is checked, and the equation or constraint it names must exist (FORMAT.md,
-// "X <HINT>").
-void Checker::discard(const Box& cell) {
-  rd.count(2);
-  const std::string_view h = rd.word();
-  size_t digits = 0;  // where the index of eq<i> or c<k> starts
-  if (h.compare(0, 2, "eq") == 0) digits = 2;
-  if (h[0] == 'c') digits = 1;
-  const bool indexed = digits > 0 && h.size() > digits;
-  const long i = indexed ? parse_int(h.substr(digits), rec()) : -1;
-  const long named = digits == 2 ? m.n() : long(m.constraints.size());
-  if (h != "hs" && (i < 0 || i >= named))
-    malformed(rec(), "bad hint '" + std::string(h) + "'");
-  if (!refutes(cell)) reject("cannot refute the discarded cell" + show(cell));
-}
-
-void Checker::leaf(const Box& cell) {
-  if (rd.size() < 3) malformed(rec(), std::string(rd.kind()) + " record: too few fields");
-  if (rd.integer() != int64_t(R.size())) reject("output box ids must be 0, 1, 2, ... in order");
-  if (rd.kind() == "S") {
-    solution_leaf(cell);
-    return;
+  void bisection(Box& cell, std::vector<Box>& stack) {
+    rd.count(3);
+    const long v = index(nv);
+    const double x = rd.real();
+    if (!(cell[2 * v] < x && x < cell[2 * v + 1]))
+      reject("bisection point not strictly inside the cell");
+    stack.push_back(cell);
+    stack.back()[2 * v] = x;  // right child below, left child on top
+    cell[2 * v + 1] = x;
+    stack.push_back(std::move(cell));
   }
-  rd.count(3);
-  pr->load(cell.data());
-  // N (a cell a stopped search never reached) is checked and used as U is: its box is the
-  // cell, it may hold solutions, and the bound counts it in every compatible class.
-  const bool unexplored = rd.kind() == "N";
-  store(rd.word(), false, cell.data(), false);
-  ++(unexplored ? out.unexplored : out.undecided);
-}
 
-void Checker::solution_leaf(const Box& cell) {
-  const size_t nn = size_t(n) * n;
-  const size_t weights = version == 1 ? 0 : 2 * size_t(n);
-  rd.count(3 + 4 * size_t(n) + 3 * nn + weights);
-  const std::string_view signs = rd.word();
-  const Box Q = rd.intervals(n);
-  const Box img = rd.intervals(n);
-  const std::vector<double> C = rd.reals(nn);
-  const std::vector<double> CX = rd.reals(nn);
-  const std::vector<double> CQ = rd.reals(nn);
-  std::vector<double> DX(n, 1.0);  // version 1: unscaled dominance
-  std::vector<double> DQ(n, 1.0);
-  if (version == 2) {
-    DX = rd.reals(n);
-    DQ = rd.reals(n);
+  // X: the cell holds no feasible solution. The checker runs its whole refutation procedure
+  // whatever the hint says, so the hint is a label: its form (hs, eq<i>, c<k>, canonical
+  // indices) is checked, and the equation or constraint it names must exist (FORMAT.md,
+  // "X <HINT>").
+  void discard(const Box& cell) {
+    rd.count(2);
+    const std::string_view h = rd.word();
+    size_t digits = 0;  // where the index of eq<i> or c<k> starts
+    if (h.compare(0, 2, "eq") == 0) digits = 2;
+    if (h[0] == 'c') digits = 1;
+    const bool indexed = digits > 0 && h.size() > digits;
+    const long i = indexed ? parse_int(h.substr(digits), rec()) : -1;
+    const long named = digits == 2 ? m.n() : long(m.constraints.size());
+    if (h != "hs" && (i < 0 || i >= named))
+      malformed(rec(), "bad hint '" + std::string(h) + "'");
+    if (!refutes(cell)) reject("cannot refute the discarded cell" + show(cell));
   }
-  for (int j = 0; j < n; ++j)
-    if (!(DX[j] > 0) || !(DQ[j] > 0)) reject("P2: a column weight is not positive");
-  const Box B = solution_box(cell, Q, img);
-  pr->load(cell.data());
-  unique_zero("P1", Q, C, img, "the Hansen-Sengupta image is not inside IMAGE");
-  pr->load(B.data());
-  const char* why = pr->regular(CX.data(), CQ.data(), DX.data(), DQ.data());
-  if (why) reject(std::string("P2: ") + why);
-  if (ev->feasible(pr->box.data()) != 2)
-    reject("inner test: a constraint is not True on the box" + show(B));
-  store(signs, true, B.data(), true);
-  ++out.solutions;
-}
 
-// The output box of an S record: the cell's poses with IMAGE's commands, once Q~ and IMAGE
-// are tied to the cell and to the declared domain (checks 1 and 3 of FORMAT.md).
-Box Checker::solution_box(const Box& cell, const Box& Q, const Box& img) {
-  Box B = cell;
-  for (int j = 0; j < n; ++j) {
-    const int v = m.command[j];
-    const double qlo = Q[2 * j];
-    const double qhi = Q[2 * j + 1];
-    if (!within(qlo, qhi, cell[2 * v], cell[2 * v + 1]))
-      reject("coverage: the cell's " + m.vars[v].name + " is not inside Q~");
-    if (!within(qlo, qhi, img[2 * j], img[2 * j + 1])) reject("IMAGE is not inside Q~");
-    if (!periodic[v] && !within_domain(v, img[2 * j], img[2 * j + 1]))
-      reject("IMAGE leaves the declared domain of " + m.vars[v].name);
-    B[2 * v] = img[2 * j];
-    B[2 * v + 1] = img[2 * j + 1];
+  void leaf(const Box& cell) {
+    if (rd.size() < 3) malformed(rec(), std::string(rd.kind()) + " record: too few fields");
+    if (rd.integer() != int64_t(R.size())) reject("output box ids must be 0, 1, 2, ... in order");
+    if (rd.kind() == "S") {
+      solution_leaf(cell);
+      return;
+    }
+    rd.count(3);
+    pr->load(cell.data());
+    // N (a cell a stopped search never reached) is checked and used as U is: its box is the
+    // cell, it may hold solutions, and the bound counts it in every compatible class.
+    const bool unexplored = rd.kind() == "N";
+    store(rd.word(), false, cell.data(), false);
+    ++(unexplored ? out.unexplored : out.undecided);
   }
-  // Each non-periodic pose variable must meet the declared domain (a periodic one does,
-  // modulo 2π): a box outside it may not count for the bound.
-  for (int v : m.pose)
-    if (!periodic[v] && !meets_domain(B.data(), v))
-      reject("solution box misses the declared domain of " + m.vars[v].name + show(B));
-  return B;
-}
 
-// A Hansen–Sengupta step on pr->box proves `claim` (P1 or P3): its image H lies in int Q~
-// (so f has a unique zero in Q~) and in `target` (one lo/hi pair per command).
-void Checker::unique_zero(const std::string& claim, const Box& Q, const std::vector<double>& C,
-                          const Box& target, const std::string& outside, bool pose) {
-  if (const char* why = pr->newton(Q.data(), C.data(), pose)) reject(claim + ": " + why);
-  for (int j = 0; j < n; ++j) {
-    const Ival& y = pr->y[j];
-    if (!inside(y, Q[2 * j], Q[2 * j + 1], true))
-      reject(claim + ": the Hansen-Sengupta image is not inside the interior of Q~");
-    if (!inside(y, target[2 * j], target[2 * j + 1], false)) reject(claim + ": " + outside);
+  void solution_leaf(const Box& cell) {
+    const size_t nn = size_t(n) * n;
+    const size_t weights = version == 1 ? 0 : 2 * size_t(n);
+    rd.count(3 + 4 * size_t(n) + 3 * nn + weights);
+    const std::string_view signs = rd.word();
+    const Box Q = rd.intervals(n);
+    const Box img = rd.intervals(n);
+    const std::vector<double> C = rd.reals(nn);
+    const std::vector<double> CX = rd.reals(nn);
+    const std::vector<double> CQ = rd.reals(nn);
+    const std::vector<double> ones(n, 1.0);  // version 1: unscaled dominance
+    const std::vector<double> DX = version == 1 ? ones : rd.reals(n);
+    const std::vector<double> DQ = version == 1 ? ones : rd.reals(n);
+    for (int j = 0; j < n; ++j)
+      if (!(DX[j] > 0) || !(DQ[j] > 0)) reject("P2: a column weight is not positive");
+    const Box B = solution_box(cell, Q, img);
+    pr->load(cell.data());
+    unique_zero("P1", Q, C, img, "the Hansen-Sengupta image is not inside IMAGE");
+    pr->load(B.data());
+    const char* why = pr->regular(CX.data(), CQ.data(), DX.data(), DQ.data());
+    if (why) reject(std::string("P2: ") + why);
+    if (ev->feasible(pr->box.data()) != 2)
+      reject("inner test: a constraint is not True on the box" + show(B));
+    store(signs, true, B.data(), true);
+    ++out.solutions;
   }
-}
 
-// Parses SIGNS, proves every claimed sign on pr->box, and stores the output box.
-void Checker::store(std::string_view s, bool jac, const double* box, bool solution) {
-  bool ok = s.size() == size_t(p) && s.find_first_not_of("+-0") == s.npos;
-  if (p == 0) ok = s == ".";  // SIGNS: p characters of "+-0", or "." when there is no factor
-  if (!ok) malformed(rec(), "bad SIGNS field '" + std::string(s) + "'");
-  uint32_t pos = 0;
-  uint32_t neg = 0;
-  Ival val;
-  for (int i = 0; i < p; ++i) {
-    if (s[i] == '0') continue;
-    const std::string which = "factor " + std::to_string(i + 1);
-    if (!pr->factor(factors[i], jac, val)) reject(which + " is not defined on the box");
-    // A proved non-user factor leaves the Jacobians of the box computed, for the next ones.
-    if (factors[i].kind != Factor::User) jac = true;
-    if (val.sign() != (s[i] == '+' ? 1 : -1))
-      reject("sign '" + std::string(1, s[i]) + "' of " + which + " not proved");
-    if (s[i] == '+') {
-      pos |= 1u << i;
-    } else {
-      neg |= 1u << i;
+  // The output box of an S record: the cell's poses with IMAGE's commands, once Q~ and IMAGE
+  // are tied to the cell and to the declared domain (checks 1 and 3 of FORMAT.md).
+  Box solution_box(const Box& cell, const Box& Q, const Box& img) {
+    Box B = cell;
+    for (int j = 0; j < n; ++j) {
+      const int v = m.command[j];
+      const double qlo = Q[2 * j];
+      const double qhi = Q[2 * j + 1];
+      if (!within(qlo, qhi, cell[2 * v], cell[2 * v + 1]))
+        reject("coverage: the cell's " + m.vars[v].name + " is not inside Q~");
+      if (!within(qlo, qhi, img[2 * j], img[2 * j + 1])) reject("IMAGE is not inside Q~");
+      if (!periodic[v] && !within_domain(v, img[2 * j], img[2 * j + 1]))
+        reject("IMAGE leaves the declared domain of " + m.vars[v].name);
+      put(B, v, img[2 * j], img[2 * j + 1]);
+    }
+    // Each non-periodic pose variable must meet the declared domain (a periodic one does,
+    // modulo 2π): a box outside it may not count for the bound.
+    for (int v : m.pose)
+      if (!periodic[v] && !meets_domain(B.data(), v))
+        reject("solution box misses the declared domain of " + m.vars[v].name + show(B));
+    return B;
+  }
+
+  // A Hansen–Sengupta step on pr->box proves `claim` (P1 or P3): its image H lies in int Q~
+  // (so f has a unique zero in Q~) and in `target` (one lo/hi pair per command).
+  void unique_zero(const std::string& claim, const Box& Q, const std::vector<double>& C,
+                   const Box& target, const std::string& outside, bool pose = false) {
+    if (const char* why = pr->newton(Q.data(), C.data(), pose)) reject(claim + ": " + why);
+    for (int j = 0; j < n; ++j) {
+      const Ival& y = pr->y[j];
+      if (!inside(y, Q[2 * j], Q[2 * j + 1], true))
+        reject(claim + ": the Hansen-Sengupta image is not inside the interior of Q~");
+      if (!inside(y, target[2 * j], target[2 * j + 1], false)) reject(claim + ": " + outside);
     }
   }
-  R.lohi.insert(R.lohi.end(), box, box + 2 * nv);
-  R.pos.push_back(pos);
-  R.neg.push_back(neg);
-  R.solution.push_back(solution);
-}
 
-// `head COUNT`, then COUNT records of kind `kind`, each checked by record(i).
-template <class Record>
-void Checker::section(const char* head, const char* kind, Record record) {
-  const int64_t total = rd.require({head}, 1).integer();
-  if (total < 0) malformed(rec(), "negative count");
-  for (int64_t i = 0; i < total; ++i) {
-    next_record();
-    if (rd.kind() != kind) {
-      const std::string announced = " (" + std::to_string(total) + " announced)";
-      malformed(rec(), std::string("expected a ") + kind + " record" + announced);
+  // Parses SIGNS, proves every claimed sign on pr->box, and stores the output box.
+  void store(std::string_view s, bool jac, const double* box, bool solution) {
+    bool ok = s.size() == size_t(p) && s.find_first_not_of("+-0") == s.npos;
+    if (p == 0) ok = s == ".";  // SIGNS: p characters of "+-0", or "." when there is no factor
+    if (!ok) malformed(rec(), "bad SIGNS field '" + std::string(s) + "'");
+    uint32_t pos = 0, neg = 0;
+    Ival val;
+    for (int i = 0; i < p; ++i) {
+      if (s[i] == '0') continue;
+      const std::string which = "factor " + std::to_string(i + 1);
+      if (!pr->factor(factors[i], jac, val)) reject(which + " is not defined on the box");
+      // A proved non-user factor leaves the Jacobians of the box computed, for the next ones.
+      if (factors[i].kind != Factor::User) jac = true;
+      if (val.sign() != (s[i] == '+' ? 1 : -1))
+        reject("sign '" + std::string(1, s[i]) + "' of " + which + " not proved");
+      (s[i] == '+' ? pos : neg) |= 1u << i;
     }
-    record(i);
+    R.lohi.insert(R.lohi.end(), box, box + 2 * nv);
+    R.pos.push_back(pos);
+    R.neg.push_back(neg);
+    R.solution.push_back(solution);
   }
-}
 
-// SHIFT: one character of "-0+" per variable, k_v = -1, 0, +1.
-std::vector<int> Checker::shifts() {
-  const std::string_view s = rd.word();
-  if (s.size() != size_t(nv) || s.find_first_not_of("-0+") != s.npos)
-    malformed(rec(), "bad SHIFT field");
-  std::vector<int> k(nv);
-  for (int v = 0; v < nv; ++v) k[v] = int(s[v] == '+') - int(s[v] == '-');
-  return k;
-}
-
-// Variable v of box a ∩ (box b + 2πk), the shifted ends of b rounded inward (FORMAT.md,
-// "Certified links"); empty when lo > hi.
-std::pair<double, double> Checker::inner(long a, long b, int v, int k) {
-  double blo = R.box(b)[2 * v];
-  double bhi = R.box(b)[2 * v + 1];
-  if (k) {
-    Ival t;
-    shift_by_periods(t, ev->two_pi, k, blo);
-    blo = t.hi();
-    shift_by_periods(t, ev->two_pi, k, bhi);
-    bhi = t.lo();
+  // `head COUNT`, then COUNT records of kind `kind`, each checked by record(i).
+  template <class Record>
+  void section(const char* head, const char* kind, Record record) {
+    const int64_t total = rd.require({head}, 1).integer();
+    if (total < 0) malformed(rec(), "negative count");
+    for (int64_t i = 0; i < total; ++i) {
+      next_record();
+      if (rd.kind() != kind) {
+        const std::string announced = " (" + std::to_string(total) + " announced)";
+        malformed(rec(), std::string("expected a ") + kind + " record" + announced);
+      }
+      record(i);
+    }
   }
-  return {std::max(R.box(a)[2 * v], blo), std::min(R.box(a)[2 * v + 1], bhi)};
-}
 
-// K: box A and box B shifted by 2πk share a solution (P3).
-void Checker::link() {
-  rd.count(4 + 3 * size_t(n) + size_t(n) * n);
-  const long a = index(R.size());
-  const long b = index(R.size());
-  if (!(a < b)) reject("link needs A < B");
-  if (!R.solution[a] || !R.solution[b])
-    reject("link between boxes that are not both solution boxes");
-  if (std::make_pair(a, b) <= last_link) reject("links not sorted by (A, B) or repeated");
-  const std::vector<int> k = shifts();
-  const std::vector<double> w = rd.reals(n);
-  const Box Q = rd.intervals(n);
-  const std::vector<double> C = rd.reals(size_t(n) * n);
-  Box X(2 * nv);  // the intersection, then the witness pose with its commands
-  for (int v = 0; v < nv; ++v) {
-    if (k[v] && !periodic[v]) reject("shift on a non-periodic variable");
-    std::tie(X[2 * v], X[2 * v + 1]) = inner(a, b, v, k[v]);
-    if (!(X[2 * v] <= X[2 * v + 1])) reject("the linked boxes do not meet");
+  // SHIFT: one character of "-0+" per variable, k_v = -1, 0, +1.
+  std::vector<int> shifts() {
+    const std::string_view s = rd.word();
+    if (s.size() != size_t(nv) || s.find_first_not_of("-0+") != s.npos)
+      malformed(rec(), "bad SHIFT field");
+    std::vector<int> k(nv);
+    for (int v = 0; v < nv; ++v) k[v] = int(s[v] == '+') - int(s[v] == '-');
+    return k;
   }
-  Box commands(2 * n);
-  for (int j = 0; j < n; ++j) {
-    const int v = m.pose[j];
-    if (!within(X[2 * v], X[2 * v + 1], w[j], w[j]))
-      reject("witness outside the boxes' intersection");
-    X[2 * v] = w[j];
-    X[2 * v + 1] = w[j];
-    commands[2 * j] = X[2 * m.command[j]];
-    commands[2 * j + 1] = X[2 * m.command[j] + 1];
-  }
-  pr->load(X.data());
-  unique_zero("P3", Q, C, commands, "the command is not in both boxes");
-  linked.unite(int(a), int(b));
-  last_link = {a, b};
-  ++out.links;
-}
 
-// csnc K SIZE IDS: component K, listed by decreasing size, is connected by verified links.
-void Checker::csnc(int64_t k) {
-  if (rd.size() < 3) malformed(rec(), "expected a csnc record");
-  if (rd.integer() != k) reject("components must be numbered 0, 1, 2, ...");
-  const int64_t size = rd.integer();
-  if (size < 1 || rd.size() != 3 + size_t(size))
-    malformed(rec(), "csnc: SIZE does not match the ids");
-  if (!sizes.empty() && size > sizes.back()) reject("components not listed by decreasing size");
-  sizes.push_back(size);
-  long prev = -1;
-  for (int64_t i = 0; i < size; ++i) {
-    const long id = index(R.size());
-    if (id <= prev) reject("component ids not increasing");
-    if (!R.solution[id]) reject("component holds a box that is not a solution box");
-    if (csnc_of[id] >= 0) reject("box " + std::to_string(id) + " is in two components");
-    csnc_of[id] = int32_t(k);
-    if (prev >= 0 && linked.find(int(id)) != linked.find(int(prev)))
-      reject("component is not connected by certified links");
-    prev = id;
+  // Variable v of box a ∩ (box b + 2πk), the shifted ends of b rounded inward (FORMAT.md,
+  // "Certified links"); empty when lo > hi.
+  std::pair<double, double> inner(long a, long b, int v, int k) {
+    double blo = R.box(b)[2 * v];
+    double bhi = R.box(b)[2 * v + 1];
+    if (k) {
+      Ival t;
+      shift_by_periods(t, ev->two_pi, k, blo);
+      blo = t.hi();
+      shift_by_periods(t, ev->two_pi, k, bhi);
+      bhi = t.lo();
+    }
+    return {std::max(R.box(a)[2 * v], blo), std::min(R.box(a)[2 * v + 1], bhi)};
   }
-}
 
-// A < B are solution boxes of CSNC c (W and V records).
-void Checker::pair_in_csnc(long c, long a, long b) {
-  if (!(a < b)) reject("witness needs A < B");
-  if (!R.solution[a] || !R.solution[b]) reject("witness boxes are not both solution boxes");
-  if (csnc_of[a] != c || csnc_of[b] != c) reject("witness boxes are not both in the named CSNC");
-}
-
-// W CSNC A B SHIFT (FORMAT.md, "Cuspidality witnesses"): two solution boxes of one CSNC
-// whose poses overlap and whose commands are disjoint.
-void Checker::witness() {
-  rd.count(5);
-  const long c = index(sizes.size());
-  const long a = index(R.size());
-  const long b = index(R.size());
-  const std::vector<int> k = shifts();
-  if (std::make_tuple(c, a, b) <= last_witness)
-    reject("witnesses not sorted by (CSNC, A, B) or repeated");
-  pair_in_csnc(c, a, b);
-  for (int v = 0; v < nv; ++v)
-    if (k[v] && (!periodic[v] || !m.vars[v].pose))
-      reject("witness shift on a command or a non-periodic variable");
-  for (int v : m.pose) {
-    const std::pair<double, double> x = inner(a, b, v, k[v]);
-    if (!(x.first <= x.second)) reject("witness poses do not overlap");
-  }
-  bool disjoint = false;
-  for (int v : m.command) disjoint = disjoint || apart(a, b, v);
-  if (!disjoint) reject("witness commands are not disjoint");
-  out.cuspidal_csncs += c != std::get<0>(last_witness);
-  last_witness = {c, a, b};
-  ++out.cuspidal;
-}
-
-// V CSNC A B SHIFT Q* X~A CA X~B CB (FORMAT.md, "Assembly-mode witnesses"): q* lies in the
-// commands of box A and of box B + 2πk, and f(·, q*) has a zero in each box's poses, proved
-// by Hansen–Sengupta in x; the two poses are disjoint, so q* has two poses in one CSNC.
-void Checker::assembly() {
-  rd.count(5 + 5 * size_t(n) + 2 * size_t(n) * n);
-  const long c = index(sizes.size());
-  const long a = index(R.size());
-  const long b = index(R.size());
-  const std::vector<int> k = shifts();
-  if (std::make_tuple(c, a, b) <= last_assembly)
-    reject("assembly witnesses not sorted by (CSNC, A, B) or repeated");
-  pair_in_csnc(c, a, b);
-  for (int v = 0; v < nv; ++v)
-    if (k[v] && (!periodic[v] || m.vars[v].pose))
-      reject("assembly shift on a pose or a non-periodic variable");
-  bool disjoint = false;
-  for (int v : m.pose) disjoint = disjoint || apart(a, b, v);
-  if (!disjoint) reject("assembly poses are not disjoint");
-  const std::vector<double> q = rd.reals(n);
-  Box X(2 * nv);  // the point command q*; the poses are the unknowns
-  for (int j = 0; j < n; ++j) {
-    const int v = m.command[j];
-    const std::pair<double, double> I = inner(a, b, v, k[v]);
-    if (!within(I.first, I.second, q[j], q[j])) reject("q* is not in both boxes' commands");
-    X[2 * v] = q[j];
-    X[2 * v + 1] = q[j];
-  }
-  for (long id : {a, b}) {
-    const Box Xt = rd.intervals(n);
+  // K: box A and box B shifted by 2πk share a solution (P3).
+  void link() {
+    rd.count(4 + 3 * size_t(n) + size_t(n) * n);
+    const long a = index(R.size());
+    const long b = index(R.size());
+    if (!(a < b)) reject("link needs A < B");
+    if (!R.solution[a] || !R.solution[b])
+      reject("link between boxes that are not both solution boxes");
+    if (std::make_pair(a, b) <= last_link) reject("links not sorted by (A, B) or repeated");
+    const std::vector<int> k = shifts();
+    const std::vector<double> w = rd.reals(n);
+    const Box Q = rd.intervals(n);
     const std::vector<double> C = rd.reals(size_t(n) * n);
-    Box poses(2 * n);
+    Box X(2 * nv);  // the intersection, then the witness pose with its commands
+    for (int v = 0; v < nv; ++v) {
+      if (k[v] && !periodic[v]) reject("shift on a non-periodic variable");
+      std::tie(X[2 * v], X[2 * v + 1]) = inner(a, b, v, k[v]);
+      if (!(X[2 * v] <= X[2 * v + 1])) reject("the linked boxes do not meet");
+    }
+    Box commands(2 * n);
     for (int j = 0; j < n; ++j) {
       const int v = m.pose[j];
-      if (!periodic[v] && !within_domain(v, Xt[2 * j], Xt[2 * j + 1]))
-        reject("x~ leaves the declared domain of " + m.vars[v].name);
-      poses[2 * j] = R.box(id)[2 * v];
-      poses[2 * j + 1] = R.box(id)[2 * v + 1];
+      if (!within(X[2 * v], X[2 * v + 1], w[j], w[j]))
+        reject("witness outside the boxes' intersection");
+      put(X, v, w[j], w[j]);
+      put(commands, j, X[2 * m.command[j]], X[2 * m.command[j] + 1]);
     }
     pr->load(X.data());
-    unique_zero("assembly", Xt, C, poses, "the pose is not in the box", true);
+    unique_zero("P3", Q, C, commands, "the command is not in both boxes");
+    linked.unite(int(a), int(b));
+    last_link = {a, b};
+    ++out.links;
   }
-  last_assembly = {c, a, b};
-  ++out.assembly;
-}
 
-// Variable v of boxes a and b is disjoint, modulo 2π when v is periodic: for one m, b + 2πm
-// lies strictly above a and b + 2π(m − 1) strictly below it (shifted ends rounded outward;
-// the candidates m come from double arithmetic, only the MPFI comparisons decide).
-bool Checker::apart(long a, long b, int v) {
-  const double al = R.box(a)[2 * v];
-  const double ah = R.box(a)[2 * v + 1];
-  const double bl = R.box(b)[2 * v];
-  const double bh = R.box(b)[2 * v + 1];
-  if (!periodic[v]) return ah < bl || bh < al;
-  const double guess = std::ceil((ah - bl) / (2 * M_PI));
-  if (!(std::fabs(guess) < 1048576)) return false;
-  Ival t;
-  for (long m = long(guess) - 1; m <= long(guess) + 1; ++m) {
-    shift_by_periods(t, ev->two_pi, int(m), bl);
-    if (!(ah < t.lo())) continue;
-    shift_by_periods(t, ev->two_pi, int(m - 1), bh);
-    if (t.hi() < al) return true;
-  }
-  return false;
-}
-
-// claim filtered, claim lower-bound and end; the bound is recomputed from the verified
-// boxes. Returns the number of pairs of the neighbourhood graph M.
-size_t Checker::claims(const CheckOptions& o) {
-  if (rd.require({"claim", "filtered"}, 1).integer() != filtered_count(sizes))
-    reject("claim filtered does not match the filtering rule");
-  const int64_t claim = rd.expect({"claim", "lower-bound"}, 1).integer();
-  const long claim_rec = rec();
-  if (claim < 0) malformed(rec(), "negative lower bound");
-  const int64_t records = rd.expect({"end"}, 1).integer();
-  if (records != rec() - 1) malformed(rec(), "end: wrong record count");
-  rd.expect_eof();
-  // A real subdivision has a few neighbours per box, while S records that share one IMAGE
-  // over many cells make M quadratic (10^5 boxes: 5·10^9 pairs, 40 GB): rejected instead.
-  std::vector<std::pair<int, int>> M;
-  try {
-    M = neighbour_pairs(R, periodic, ev->two_pi, (size_t(1) << 22) + 64 * R.size());
-  } catch (const std::length_error&) {
-    rejected(claim_rec, "the neighbourhood graph has more than 2^22 + 64 pairs per box");
-  }
-  uint32_t checkable = 0;  // the factors the checker can verify: all but `user` ones
-  for (int i = 0; i < p; ++i)
-    if (factors[i].kind != Factor::User) checkable |= 1u << i;
-  try {
-    out.recomputed = lower_bound(R, M, (1u << p) - 1);
-    out.checked = out.user_factors ? lower_bound(R, M, checkable) : out.recomputed;
-  } catch (const std::length_error&) {
-    rejected(claim_rec, "too many sign classes for the neighbourhood graph (2^32 steps)");
-  }
-  out.claimed = claim;
-  if (claim > out.recomputed) {
-    const std::string both = std::to_string(claim) + " exceeds the recomputed ";
-    rejected(claim_rec, "claimed lower bound " + both + std::to_string(out.recomputed));
-  }
-  out.verdict = "VERIFIED";
-  if (claim > out.checked) {
-    out.reason = "the claimed lower bound rests on user-supplied factors, which the checker "
-                 "cannot verify; without them it is " + std::to_string(out.checked);
-    if (o.trust_factors) {
-      out.reason += "; trusted (--trust-factors)";
-    } else {
-      out.verdict = "UNCHECKED";
+  // csnc K SIZE IDS: component K, listed by decreasing size, is connected by verified links.
+  void csnc(int64_t k) {
+    if (rd.size() < 3) malformed(rec(), "expected a csnc record");
+    if (rd.integer() != k) reject("components must be numbered 0, 1, 2, ...");
+    const int64_t size = rd.integer();
+    if (size < 1 || rd.size() != 3 + size_t(size))
+      malformed(rec(), "csnc: SIZE does not match the ids");
+    if (!sizes.empty() && size > sizes.back()) reject("components not listed by decreasing size");
+    sizes.push_back(size);
+    long prev = -1;
+    for (int64_t i = 0; i < size; ++i) {
+      const long id = index(R.size());
+      if (id <= prev) reject("component ids not increasing");
+      if (!R.solution[id]) reject("component holds a box that is not a solution box");
+      if (csnc_of[id] >= 0) reject("box " + std::to_string(id) + " is in two components");
+      csnc_of[id] = int32_t(k);
+      if (prev >= 0 && linked.find(int(id)) != linked.find(int(prev)))
+        reject("component is not connected by certified links");
+      prev = id;
     }
   }
-  return M.size();
-}
 
-void Checker::run(const CheckOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
-    work_base = std::max(10, std::min(40, std::atoi(e)));
-  header();
-  tree();
-  linked.reset(R.size());
-  rd.next();
-  section("links", "K", [&](int64_t) { link(); });
-  csnc_of.assign(R.size(), -1);
-  rd.next();
-  section("csncs", "csnc", [&](int64_t k) { csnc(k); });
-  out.csncs = long(sizes.size());
-  rd.next();
-  if (rd.kind() == "cuspidal") {  // an optional section
-    section("cuspidal", "W", [&](int64_t) { witness(); });
-    rd.next();
+  // CSNC A B SHIFT of a W record (`w`: shifts on poses) or a V record (shifts on commands):
+  // after `last` in (CSNC, A, B) order, A < B solution boxes of the CSNC. k := SHIFT.
+  std::tuple<long, long, long> pair_in_csnc(bool w, const std::tuple<long, long, long>& last,
+                                           std::vector<int>& k) {
+    const long c = index(sizes.size());
+    const long a = index(R.size());
+    const long b = index(R.size());
+    k = shifts();
+    const std::string sorted = "witnesses not sorted by (CSNC, A, B) or repeated";
+    if (std::make_tuple(c, a, b) <= last) reject(w ? sorted : "assembly " + sorted);
+    if (!(a < b)) reject("witness needs A < B");
+    if (!R.solution[a] || !R.solution[b]) reject("witness boxes are not both solution boxes");
+    if (csnc_of[a] != c || csnc_of[b] != c) reject("witness boxes are not both in the named CSNC");
+    const std::string where = w ? "witness shift on a command" : "assembly shift on a pose";
+    for (int v = 0; v < nv; ++v)
+      if (k[v] && (!periodic[v] || m.vars[v].pose != w))
+        reject(where + " or a non-periodic variable");
+    return {c, a, b};
   }
-  if (rd.kind() == "assembly") {  // an optional section
-    section("assembly", "V", [&](int64_t) { assembly(); });
-    rd.next();
+
+  // W CSNC A B SHIFT (FORMAT.md, "Cuspidality witnesses"): two solution boxes of one CSNC
+  // whose poses overlap and whose commands are disjoint.
+  void witness() {
+    rd.count(5);
+    std::vector<int> k;
+    long c, a, b;
+std::tie(c, a, b) = pair_in_csnc(true, last_witness, k);
+    for (int v : m.pose) {
+      const std::pair<double, double> x = inner(a, b, v, k[v]);
+      if (!(x.first <= x.second)) reject("witness poses do not overlap");
+    }
+    const auto apart_in = [&](int v) { return apart(a, b, v); };
+    if (std::none_of(m.command.begin(), m.command.end(), apart_in))
+      reject("witness commands are not disjoint");
+    out.cuspidal_csncs += c != std::get<0>(last_witness);
+    last_witness = {c, a, b};
+    ++out.cuspidal;
   }
-  const size_t pairs = claims(o);
-  out.cert_sha = rd.file_sha256();
-  if (o.quiet) return;
-  const auto elapsed = std::chrono::steady_clock::now() - t0;
-  std::fprintf(stderr,
-               "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M, "
-               "recomputed lower bound %ld, %.2f s\n",
-               pr->refutations, pr->refute_boxes, (unsigned long long)ev->work, pairs,
-               out.recomputed, std::chrono::duration<double>(elapsed).count());
-}
+
+  // V CSNC A B SHIFT Q* X~A CA X~B CB (FORMAT.md, "Assembly-mode witnesses"): q* lies in the
+  // commands of box A and of box B + 2πk, and f(·, q*) has a zero in each box's poses, proved
+  // by Hansen–Sengupta in x; the two poses are disjoint, so q* has two poses in one CSNC.
+  void assembly() {
+    rd.count(5 + 5 * size_t(n) + 2 * size_t(n) * n);
+    std::vector<int> k;
+    long c, a, b;
+std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
+    const auto apart_in = [&](int v) { return apart(a, b, v); };
+    if (std::none_of(m.pose.begin(), m.pose.end(), apart_in))
+      reject("assembly poses are not disjoint");
+    const std::vector<double> q = rd.reals(n);
+    Box X(2 * nv);  // the point command q*; the poses are the unknowns
+    for (int j = 0; j < n; ++j) {
+      const int v = m.command[j];
+      const std::pair<double, double> I = inner(a, b, v, k[v]);
+      if (!within(I.first, I.second, q[j], q[j])) reject("q* is not in both boxes' commands");
+      put(X, v, q[j], q[j]);
+    }
+    for (long id : {a, b}) {
+      const Box Xt = rd.intervals(n);
+      const std::vector<double> C = rd.reals(size_t(n) * n);
+      Box poses(2 * n);
+      for (int j = 0; j < n; ++j) {
+        const int v = m.pose[j];
+        if (!periodic[v] && !within_domain(v, Xt[2 * j], Xt[2 * j + 1]))
+          reject("x~ leaves the declared domain of " + m.vars[v].name);
+        put(poses, j, R.box(id)[2 * v], R.box(id)[2 * v + 1]);
+      }
+      pr->load(X.data());
+      unique_zero("assembly", Xt, C, poses, "the pose is not in the box", true);
+    }
+    last_assembly = {c, a, b};
+    ++out.assembly;
+  }
+
+  // Variable v of boxes a and b is disjoint, modulo 2π when v is periodic: for one m, b + 2πm
+  // lies strictly above a and b + 2π(m − 1) strictly below it (shifted ends rounded outward;
+  // the candidates m come from double arithmetic, only the MPFI comparisons decide).
+  bool apart(long a, long b, int v) {
+    const double al = R.box(a)[2 * v];
+    const double ah = R.box(a)[2 * v + 1];
+    const double bl = R.box(b)[2 * v];
+    const double bh = R.box(b)[2 * v + 1];
+    if (!periodic[v]) return ah < bl || bh < al;
+    const double guess = std::ceil((ah - bl) / (2 * M_PI));
+    if (!(std::fabs(guess) < 1048576)) return false;
+    Ival t;
+    for (long m = long(guess) - 1; m <= long(guess) + 1; ++m) {
+      shift_by_periods(t, ev->two_pi, int(m), bl);
+      if (!(ah < t.lo())) continue;
+      shift_by_periods(t, ev->two_pi, int(m - 1), bh);
+      if (t.hi() < al) return true;
+    }
+    return false;
+  }
+
+  // claim filtered, claim lower-bound and end; the bound is recomputed from the verified
+  // boxes. Returns the number of pairs of the neighbourhood graph M.
+  size_t claims(const CheckOptions& o) {
+    if (rd.require({"claim", "filtered"}, 1).integer() != filtered_count(sizes))
+      reject("claim filtered does not match the filtering rule");
+    const int64_t claim = rd.expect({"claim", "lower-bound"}, 1).integer();
+    const long claim_rec = rec();
+    if (claim < 0) malformed(rec(), "negative lower bound");
+    const int64_t records = rd.expect({"end"}, 1).integer();
+    if (records != rec() - 1) malformed(rec(), "end: wrong record count");
+    rd.expect_eof();
+    // A real subdivision has a few neighbours per box, while S records that share one IMAGE
+    // over many cells make M quadratic (10^5 boxes: 5·10^9 pairs, 40 GB): rejected instead.
+    std::vector<std::pair<int, int>> M;
+    try {
+      M = neighbour_pairs(R, periodic, ev->two_pi, (size_t(1) << 22) + 64 * R.size());
+    } catch (const std::length_error&) {
+      rejected(claim_rec, "the neighbourhood graph has more than 2^22 + 64 pairs per box");
+    }
+    uint32_t checkable = 0;  // the factors the checker can verify: all but `user` ones
+    for (int i = 0; i < p; ++i)
+      if (factors[i].kind != Factor::User) checkable |= 1u << i;
+    try {
+      out.recomputed = lower_bound(R, M, (1u << p) - 1);
+      out.checked = out.user_factors ? lower_bound(R, M, checkable) : out.recomputed;
+    } catch (const std::length_error&) {
+      rejected(claim_rec, "too many sign classes for the neighbourhood graph (2^32 steps)");
+    }
+    out.claimed = claim;
+    if (claim > out.recomputed) {
+      const std::string both = std::to_string(claim) + " exceeds the recomputed ";
+      rejected(claim_rec, "claimed lower bound " + both + std::to_string(out.recomputed));
+    }
+    out.verdict = "VERIFIED";
+    if (claim > out.checked) {
+      out.reason = "the claimed lower bound rests on user-supplied factors, which the checker "
+                   "cannot verify; without them it is " + std::to_string(out.checked);
+      if (o.trust_factors) out.reason += "; trusted (--trust-factors)";
+      if (!o.trust_factors) out.verdict = "UNCHECKED";
+    }
+    return M.size();
+  }
+
+  void run(const CheckOptions& o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
+      work_base = std::max(10, std::min(40, std::atoi(e)));
+    header();
+    tree();
+    linked.reset(R.size());
+    rd.next();
+    section("links", "K", [&](int64_t) { link(); });
+    csnc_of.assign(R.size(), -1);
+    rd.next();
+    section("csncs", "csnc", [&](int64_t k) { csnc(k); });
+    out.csncs = long(sizes.size());
+    rd.next();
+    if (rd.kind() == "cuspidal") {  // an optional section
+      section("cuspidal", "W", [&](int64_t) { witness(); });
+      rd.next();
+    }
+    if (rd.kind() == "assembly") {  // an optional section
+      section("assembly", "V", [&](int64_t) { assembly(); });
+      rd.next();
+    }
+    const size_t pairs = claims(o);
+    out.cert_sha = rd.file_sha256();
+    if (o.quiet) return;
+    const auto elapsed = std::chrono::steady_clock::now() - t0;
+    std::fprintf(stderr,
+                 "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M, "
+                 "recomputed lower bound %ld, %.2f s\n",
+                 pr->refutations, pr->refute_boxes, (unsigned long long)ev->work, pairs,
+                 out.recomputed, std::chrono::duration<double>(elapsed).count());
+  }
+};
 
 }  // namespace
 
@@ -789,16 +727,10 @@ namespace {
 std::string quoted(const std::string& s) {
   std::string q = "\"";
   for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      q += '\\';
-      q += char(c);
-    } else if (c < 0x20 || c >= 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      q += buf;
-    } else {
-      q += char(c);
-    }
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+    if (c == '"' || c == '\\') q += '\\';
+    q += c < 0x20 || c >= 0x7f ? std::string(buf) : std::string(1, char(c));
   }
   return q + "\"";
 }
@@ -810,15 +742,11 @@ struct Count {
   bool in_text;
 };
 std::vector<Count> counts(const Verdict& v) {
-  return {{"solutions", v.solutions, true},
-          {"undecided", v.undecided, true},
-          {"unexplored", v.unexplored, true},
-          {"links", v.links, true},
-          {"csncs", v.csncs, true},
-          {"cuspidal", v.cuspidal, true},
+  return {{"solutions", v.solutions, true},   {"undecided", v.undecided, true},
+          {"unexplored", v.unexplored, true}, {"links", v.links, true},
+          {"csncs", v.csncs, true},           {"cuspidal", v.cuspidal, true},
           {"cuspidal_csncs", v.cuspidal_csncs, true},
-          {"assembly", v.assembly, true},
-          {"lower_bound", v.claimed, true},
+          {"assembly", v.assembly, true},     {"lower_bound", v.claimed, true},
           {"recomputed_lower_bound", v.recomputed, false},
           {"checked_lower_bound", v.checked, true}};
 }

@@ -10,7 +10,7 @@
 // Besides syntax it enforces what the proofs rely on: a square system, and periodic
 // variables entering only through sin/cos of sums (so f is 2π-periodic in them and the
 // 2π shifts of links and of the neighbourhood graph are sound).
-#include "model.h"
+#include "checker.h"
 
 #include <gmpxx.h>
 
@@ -38,14 +38,9 @@ std::vector<Token> lex(const std::string& s) {
   std::vector<Token> out;
   int depth = 0, line = 1, col = 1;
   size_t i = 0;
-  auto adv = [&]() {
-    if (s[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
+  auto adv = [&]() {  // one byte other than '\n' (only the newline branch consumes those)
     ++i;
+    ++col;
   };
   auto digit = [&](size_t k) { return k < s.size() && std::isdigit((unsigned char)s[k]); };
   while (i < s.size()) {
@@ -56,7 +51,9 @@ std::vector<Token> lex(const std::string& s) {
       while (i < s.size() && s[i] != '\n') adv();
     } else if (c == '\n') {
       if (depth == 0) out.push_back({Tok::Newline, "end of line", l, co});
-      adv();
+      ++i;
+      ++line;
+      col = 1;
     } else if (c == ' ' || c == '\t' || c == '\r') {
       adv();
     } else if (std::isalpha((unsigned char)c) || c == '_') {
@@ -359,25 +356,21 @@ class Parser {
     uint64_t periodic = 0;
     for (size_t v = 0; v < m_.vars.size(); ++v)
       if (m_.vars[v].periodic) periodic |= uint64_t(1) << v;
-    const size_t N = m_.nodes.size();
-    std::vector<uint64_t> bare(N, 0);
-    std::vector<char> live(N, 0);
-    for (size_t id = 0; id < N; ++id) {
+    std::vector<uint64_t> bare(m_.nodes.size(), 0);
+    for (size_t id = 0; id < bare.size(); ++id) {
       const Node& n = m_.nodes[id];
       if (n.op == Op::Var) bare[id] = n.dep;
       if (n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg)
         bare[id] = bare[n.a] | (n.b >= 0 ? bare[n.b] : 0);
     }
-    for (auto* roots : {&m_.eqs, &m_.factors, &m_.atoms})
-      for (int r : *roots) {
-        live[r] = 1;
-        if (bare[r] & periodic) fail_periodic(bare[r] & periodic);
-      }
-    for (size_t id = N; id-- > 0;) {
-      if (!live[id]) continue;
-      const Node& n = m_.nodes[id];
-      if (n.a >= 0) live[n.a] = 1;
-      if (n.b >= 0) live[n.b] = 1;
+    std::vector<int> roots = m_.eqs;
+    roots.insert(roots.end(), m_.factors.begin(), m_.factors.end());
+    roots.insert(roots.end(), m_.atoms.begin(), m_.atoms.end());
+    for (int r : roots)
+      if (bare[r] & periodic) fail_periodic(bare[r] & periodic);
+    const std::vector<int> live = closure(m_, roots);
+    for (auto id = live.rbegin(); id != live.rend(); ++id) {  // parents before children
+      const Node& n = m_.nodes[*id];
       const bool sum = n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg;
       const bool wraps = sum || n.op == Op::Sin || n.op == Op::Cos;
       uint64_t under = (n.a >= 0 ? bare[n.a] : 0) | (n.b >= 0 ? bare[n.b] : 0);
@@ -403,6 +396,21 @@ class Parser {
 }  // namespace
 
 Model parse_model(const std::string& text) { return Parser(text).run(); }
+
+std::vector<int> closure(const Model& m, const std::vector<int>& roots) {
+  std::vector<char> need(m.nodes.size(), 0);
+  for (int r : roots) need[r] = 1;
+  std::vector<int> out;
+  for (int id = int(need.size()) - 1; id >= 0; --id) {
+    if (!need[id]) continue;
+    const Node& n = m.nodes[id];
+    if (n.a >= 0) need[n.a] = 1;
+    if (n.b >= 0) need[n.b] = 1;
+    out.push_back(id);
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
 
 namespace {
 
@@ -446,21 +454,12 @@ bool exactly_one_period(const Model& m, const Var& v) {
   // Forward over the nodes the bounds use (children have smaller ids), no recursion: a
   // chain of `constant` names may be long. At most 2^24 bits of rationals in all (a hostile
   // model must not exhaust memory); beyond that the domain is refused.
-  const int top = std::max(v.lo, v.hi);
-  std::vector<char> need(size_t(top) + 1, 0);
-  need[v.lo] = 1;
-  need[v.hi] = 1;
-  for (int id = top; id >= 0; --id) {
-    const Node& n = m.nodes[id];
-    if (need[id] && n.a >= 0) need[n.a] = 1;
-    if (need[id] && n.b >= 0) need[n.b] = 1;
-  }
-  std::vector<Affine> val(size_t(top) + 1);
+  std::vector<Affine> val(size_t(std::max(v.lo, v.hi)) + 1);
   size_t budget = size_t(1) << 24;
-  for (int id = 0; id <= top; ++id) {
+  for (int id : closure(m, {v.lo, v.hi})) {
     const Node& n = m.nodes[id];
     Affine& r = val[id];
-    if (!need[id] || n.dep) continue;
+    if (n.dep) continue;
     const Affine* x = n.a >= 0 ? &val[n.a] : nullptr;
     const Affine* y = n.b >= 0 ? &val[n.b] : nullptr;
     if ((x && !x->ok) || (y && !y->ok)) continue;

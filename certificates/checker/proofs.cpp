@@ -3,7 +3,7 @@
 // hints, and the checker's own (for refutation) come from a small Gauss–Jordan inverse of
 // the midpoint matrix; any real matrix is sound because every product that feeds a
 // verdict is an MPFI operation (mpfi_mul_d is exact-input, outward-rounded output).
-#include "proofs.h"
+#include "checker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,12 +94,11 @@ void Prover::dot(Ival& out, const double* C, const Ival* const* x) {
 
 void Prover::product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out) {
   std::vector<const Ival*> column(n_);
-  for (int i = 0; i < n_; ++i) {
+  for (int i = 0; i < n_; ++i)
     for (int j = 0; j < n_; ++j) {
       for (int k = 0; k < n_; ++k) column[k] = &J[k * n_ + j];
       dot(out[i * n_ + j], C + i * n_, column.data());
     }
-  }
 }
 
 // b_ := C·f with f the values of the equations just evaluated.
@@ -122,19 +121,15 @@ void Prover::gs_row(int i, const std::vector<Ival>& X, const std::vector<Ival>& 
   mpfi_div(t1_, t1_, A_[i * n_ + i]);
 }
 
-// Jq_ (and Jx_ when `pose`) := the derivatives eval_ad() just computed.
-void Prover::read_jacobians(bool pose) {
+// J := the derivatives eval_ad() just computed w.r.t. the variables `cols`.
+void Prover::read_jacobian(const std::vector<int>& cols, std::vector<Ival>& J) {
   for (int i = 0; i < n_; ++i)
-    for (int j = 0; j < n_; ++j) {
-      Jq_[i * n_ + j] = ev_.der(m_.eqs[i], m_.command[j]);
-      if (pose) Jx_[i * n_ + j] = ev_.der(m_.eqs[i], m_.pose[j]);
-    }
+    for (int j = 0; j < n_; ++j) J[i * n_ + j] = ev_.der(m_.eqs[i], cols[j]);
 }
 
 const char* Prover::newton(const double* Q, const double* C, bool pose) {
   const std::vector<int>& u = pose ? m_.pose : m_.command;  // the unknowns
-  std::vector<Ival> X(n_);
-  std::vector<Ival> c(n_);
+  std::vector<Ival> X(n_), c(n_);  // the unknowns' box and centre
   w_ = box;
   for (int j = 0; j < n_; ++j) {
     X[j].set(Q[2 * j], Q[2 * j + 1]);
@@ -142,9 +137,7 @@ const char* Prover::newton(const double* Q, const double* C, bool pose) {
   }
   if (!ev_.eval_ad(ev_.all_eqs, w_.data(), pose ? pose_mask_ : cmd_mask_))
     return "the Jacobian is not defined on the Newton box";
-  for (int i = 0; i < n_; ++i)
-    for (int j = 0; j < n_; ++j)
-      Jq_[i * n_ + j] = ev_.der(m_.eqs[i], u[j]);  // Fx in Jq_ when `pose`
+  read_jacobian(u, Jq_);  // Fx in Jq_ when `pose`
   product(Jq_, C, A_);
   // q̌: the binary64 midpoint of Q~, clamped into it (any point of Q~ is sound).
   for (int j = 0; j < n_; ++j) {
@@ -170,7 +163,8 @@ const char* Prover::newton(const double* Q, const double* C, bool pose) {
 
 bool Prover::jacobians() {
   if (!ev_.eval_ad(ev_.all_eqs, box.data(), all_mask_)) return false;
-  read_jacobians(true);
+  read_jacobian(m_.pose, Jx_);
+  read_jacobian(m_.command, Jq_);
   return true;
 }
 
@@ -220,14 +214,12 @@ bool Prover::factor(const Factor& f, bool jac, Ival& out) {
 // checker's own preconditioner. −1: no solution in b; 0: not applicable; 1: applied.
 int Prover::hs_contract(std::vector<Ival>& b) {
   if (!ev_.eval_ad(ev_.all_eqs, b.data(), cmd_mask_)) return 0;  // f must be C¹ on b
-  read_jacobians(false);
-  std::vector<double> M(size_t(n_) * n_);
-  std::vector<double> C;
+  read_jacobian(m_.command, Jq_);
+  std::vector<double> M(size_t(n_) * n_), C;  // mid(Fq), its approximate inverse
   for (size_t k = 0; k < M.size(); ++k) M[k] = 0.5 * (Jq_[k].lo() + Jq_[k].hi());
   if (!invert(M, n_, C)) return 0;
   product(Jq_, C.data(), A_);
-  std::vector<Ival> X(n_);
-  std::vector<Ival> c(n_);
+  std::vector<Ival> X(n_), c(n_);
   w_ = b;
   for (int j = 0; j < n_; ++j) {  // the centre: the MPFR midpoint, a point of b
     X[j] = b[m_.command[j]];

@@ -1,0 +1,367 @@
+// checker.h — every declaration of check_cert, the independent checker of the certificates
+// of `aspects solve` (FORMAT.md is the specification). It shares no code with core/ or
+// proofs/: its own reader (cert_reader.cpp), model parser (model.cpp), MPFI evaluator
+// (eval.cpp), proofs on one box (proofs.cpp), graph and bound (graph.cpp), and the record
+// by record check (main.cpp).
+#pragma once
+
+#include <mpfi.h>
+#include <openssl/evp.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace cc {
+
+// ---- The lexical layer (cert_reader.cpp, FORMAT.md "Lexical rules"): one record per line,
+// single-space separated fields, canonical decimal integers and canonical `%a` hexadecimal
+// reals. The reader hashes every byte it consumes (SHA-256 of the whole file) and numbers
+// lines for error messages. Anything that does not follow the rules is a Malformed error
+// (exit 2); failed verifications are Rejected errors (exit 1), thrown by the other modules
+// with the record they concern.
+struct CertError : std::runtime_error {
+  bool malformed;  // true: exit 2; false: exit 1 (REJECTED)
+  long record;
+  CertError(bool m, long r, const std::string& why)
+      : std::runtime_error(why), malformed(m), record(r) {}
+};
+[[noreturn]] void malformed(long record, const std::string& why);
+[[noreturn]] void rejected(long record, const std::string& why);
+
+std::string sha256_hex(const std::string& bytes);
+// A canonical decimal integer (FORMAT.md); `rec` is the record named in the error.
+int64_t parse_int(std::string_view s, long rec);
+
+class LineReader {
+ public:
+  explicit LineReader(FILE* f);  // takes ownership of f
+  ~LineReader();
+  // Reads the next record and splits it into fields; checks the lexical rules.
+  LineReader& next();
+  // next(), then requires the leading fields == words and `extra` further fields.
+  LineReader& expect(const std::vector<const char*>& words, size_t extra);
+  // The same test on the record read last.
+  LineReader& require(const std::vector<const char*>& words, size_t extra);
+  void count(size_t k);  // the record read last has k fields
+  std::string_view kind() const { return fields_[0]; }
+  size_t size() const { return fields_.size(); }
+  // The fields of the record read last, left to right after its leading words.
+  std::string_view word();
+  int64_t integer();
+  double real();
+  std::vector<double> reals(size_t k);
+  // k intervals LO HI (2k reals, all parsed before any LO <= HI is checked).
+  std::vector<double> intervals(size_t k);
+  // Reads exactly `n` raw bytes (the embedded model text) and counts its lines.
+  std::string raw(size_t n);
+  void expect_eof();                         // nothing may follow the last record
+  long record() const { return line_; }      // number of the record read last
+  uint64_t bytes() const { return bytes_; }  // bytes read so far
+  std::string file_sha256();                 // after expect_eof
+
+ private:
+  FILE* f_ = nullptr;
+  EVP_MD_CTX* md_ = nullptr;
+  char* line_buf_ = nullptr;
+  size_t line_cap_ = 0;
+  long line_ = 0;
+  uint64_t bytes_ = 0;
+  std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
+  size_t pos_ = 0;                        // the next field word() returns
+};
+
+// ---- The whole check (main.cpp): reads a certificate from f (closed on return) and returns
+// the exit status, with what it found in `out`.
+struct CheckOptions {
+  bool quiet = false;          // no statistics on stderr
+  bool trust_factors = false;  // accept a bound that rests on user-supplied factors
+};
+
+// What a check found; `verdict` is VERIFIED, UNCHECKED, REJECTED or MALFORMED.
+struct Verdict {
+  std::string verdict, reason, cert_sha, model_sha, robot;
+  long record = 0;  // the record a rejection concerns
+  long solutions = 0, undecided = 0, links = 0, csncs = 0;
+  long unexplored = 0;  // N records: a stopped run's cells never searched (complete=no)
+  long cuspidal = 0, cuspidal_csncs = 0;  // verified W records; CSNCs with one
+  long assembly = 0;                      // verified V records
+  long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user
+  bool user_factors = false;
+};
+
+// Exit statuses of check_cert.
+enum Exit { kVerified = 0, kRejected = 1, kMalformed = 2, kUserFactors = 3 };
+
+int check_certificate(FILE* f, const CheckOptions& o, Verdict& out);
+
+// ---- The only interval type: an owning wrapper around one MPFI interval at the
+// certificate's precision (mpfr_set_default_prec is set once, before any Ival exists), plus
+// the few endpoint helpers the checker needs. Every interval result that feeds a verdict is
+// produced by an MPFI operation (outward rounded); the helpers only read endpoints with
+// explicit directed rounding.
+struct Ival {
+  mpfi_t v;
+  Ival() { mpfi_init(v); }
+  Ival(const Ival& o) { mpfi_init2(v, mpfi_get_prec(o.v)); mpfi_set(v, o.v); }
+  Ival& operator=(const Ival& o) {
+    if (this != &o) mpfi_set(v, o.v);
+    return *this;
+  }
+  ~Ival() { mpfi_clear(v); }
+  operator mpfi_ptr() { return v; }
+  operator mpfi_srcptr() const { return v; }
+  mpfr_ptr L() { return &v->left; }
+  mpfr_ptr R() { return &v->right; }
+  mpfr_srcptr L() const { return &v->left; }
+  mpfr_srcptr R() const { return &v->right; }
+  // Endpoints as doubles, rounded outward (lo down, hi up).
+  double lo() const { return mpfr_get_d(&v->left, MPFR_RNDD); }
+  double hi() const { return mpfr_get_d(&v->right, MPFR_RNDU); }
+  void set(double lo, double hi) { mpfi_interv_d(v, lo, hi); }
+  void entire() { mpfr_set_inf(&v->left, -1); mpfr_set_inf(&v->right, 1); }
+  bool empty() const { return mpfi_nan_p(v) || mpfi_is_empty(v); }
+  bool bounded() const { return !mpfi_nan_p(v) && mpfi_bounded_p(v); }
+  bool has_zero() const { return mpfi_has_zero(v) > 0; }
+  // Certain sign: +1 when lo > 0, -1 when hi < 0, else 0.
+  int sign() const {
+    if (empty()) return 0;
+    if (mpfr_sgn(&v->left) > 0) return 1;
+    if (mpfr_sgn(&v->right) < 0) return -1;
+    return 0;
+  }
+  // this ∩= o; false when the result is empty.
+  bool meet(mpfi_srcptr o) {
+    mpfi_intersect(v, v, o);
+    return !empty();
+  }
+};
+
+// ---- A robot model (model.cpp): an expression DAG whose children always have smaller ids
+// than their parents (so increasing id order is a forward evaluation order), the variables
+// in declaration order, the equations (lhs - rhs) and the user factors, and the constraint
+// formulas (paper 5.4). The parser is purely syntactic: literals are kept as decimal strings
+// and turned into enclosing MPFI intervals by the evaluator (mpfi_set_str), never via strtod.
+enum class Op : uint8_t {
+  Const, Pi, Var, Add, Sub, Mul, Div, Min, Max,
+  Neg, Sqr, Sqrt, Sin, Cos, Tan, Exp, Log, Abs, Asin, Acos, Atan, Pow
+};
+
+struct Node {
+  Op op;
+  int a = -1, b = -1;
+  int k = 0;         // Var: variable index; Const: literal index; Pow: exponent
+  uint64_t dep = 0;  // bit v: the node mentions variable v (after expanding names)
+};
+
+struct Var {
+  std::string name;
+  bool pose = false, periodic = false;
+  int lo = -1, hi = -1;  // nodes of the declared bounds (constant expressions)
+};
+
+// A node of a constraint formula: an atom g >= 0 (g > 0 if strict) or the and/or of kids.
+struct Formula {
+  enum Kind : uint8_t { Atom, And, Or } kind = Atom;
+  bool strict = false;
+  int expr = -1;  // Atom: node of g (E1 - E2, or E2 - E1 for <= and <)
+  std::vector<int> kids;
+};
+
+struct Model {
+  std::string name;
+  std::vector<Node> nodes;
+  std::vector<std::string> literals;
+  std::vector<Var> vars;
+  std::vector<int> pose, command;  // variable indices, declaration order
+  std::vector<int> eqs, factors;   // root nodes
+  std::vector<Formula> formulas;
+  std::vector<int> constraints, atoms;  // root formula of each constraint; node g of each atom
+  int n() const { return int(eqs.size()); }
+};
+
+struct ModelError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Parses the model language; throws ModelError("LINE:COL: message").
+Model parse_model(const std::string& text);
+// The nodes `roots` depend on, themselves included, in increasing id order.
+std::vector<int> closure(const Model& m, const std::vector<int>& roots);
+
+// True when the declared domain of v is exactly one period: both bounds are a·π + b with
+// exact rationals a, b (decimal literals, pi, +, -, and * or / by a rational) and
+// hi − lo = 2π exactly. An interval test cannot decide this: a decimal bound close enough
+// to π passes it at any fixed precision, and leaves a gap at the seam.
+bool exactly_one_period(const Model& m, const Var& v);
+
+// ---- Interval evaluation of the model's DAG in MPFI (eval.cpp): natural forward
+// evaluation, the three-valued truth of the constraints (FORMAT.md, "Constraints"),
+// forward-mode interval AD for the Jacobians, and HC4-Revise.
+enum class Mode { Proof, Refute, Truth };
+
+// Thrown when a check needs more work than the checker allows (Evaluator::work_limit).
+struct WorkLimit : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Evaluator {
+ public:
+  explicit Evaluator(const Model& m);
+  const Model& model() const { return m_; }
+  int nv() const { return int(m_.vars.size()); }
+
+  // Values of the nodes of `prog` on `box` (one interval per variable). Proof: true iff
+  // every node is defined and finite on the whole box. Refute: false only when some node
+  // is defined nowhere on the box (then no point of the box is a solution). Truth: never.
+  bool eval(const std::vector<int>& prog, const Ival* box, Mode mode);
+  // Kleene truth of the conjunction of every constraint on box: 0 False, 1 Unknown, 2 True.
+  int feasible(const Ival* box);
+  // Proof-mode values and derivatives w.r.t. the variables whose bit is set in `dirs`.
+  bool eval_ad(const std::vector<int>& prog, const Ival* box, uint64_t dirs);
+  const Ival& val(int id) const { return val_[id]; }
+  const Ival& der(int id, int var) const { return der_[size_t(id) * nv() + var]; }
+  // HC4-Revise of equation `eq` (= 0) on box; false: the box holds no solution of it.
+  bool hc4(int eq, Ival* box);
+  // The value of a constant node (domain bounds); false if undefined or unbounded.
+  bool constant(int id, Ival& out) const;
+
+  std::vector<int> all_eqs, all_atoms;           // program of every equation, of every atom
+  std::vector<std::vector<int>> eq_prog, factor_prog;
+  Ival two_pi;
+  // Node evaluations (forward, derivative, backward) so far; past `work_limit` (set by
+  // main.cpp from the bytes read), eval(), eval_ad() and hc4() throw WorkLimit.
+  uint64_t work = 0;
+  uint64_t work_limit = UINT64_MAX;
+
+ private:
+  void charge(size_t nodes) {
+    work += nodes;
+    if (work > work_limit)
+      throw WorkLimit("the check needs more work than the checker allows for its size");
+  }
+  int apply(int id, Ival& r, const Ival* a, const Ival* b);
+  int truth(int formula) const;
+  void trig(bool cosine, int child, const Ival& a, Ival& r);
+  void power(Ival& r, const Ival& a, int k);
+  bool derive(int id);
+  bool backward(int id, Ival* box);
+  bool monotone_projection(Op op, const Ival& r, Ival& a, const Ival& fa);
+  bool project_general(Op op, const Ival& r, Ival& a);
+  void branch_inverse(Op op, mpfr_srcptr y, int s, double c, Ival& out);
+  bool hull_both(Ival& a, const Ival& s);  // a ∩= (s ∪ −s)
+  bool meet_nonnegative(Ival& r);
+  bool project_square(Ival& r, Ival& a);
+
+  const Model& m_;
+  std::vector<Ival> val_, der_, cval_;
+  // Per node: 0 defined (and finite) on the whole box, 1 partial or unbounded, 2 nowhere.
+  std::vector<int> cstat_, st_;  // constant nodes (once), every node (last evaluation)
+  // One-entry cache of sin and cos per argument node: MPFR trigonometry is the costly
+  // part, and sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit it.
+  struct TrigCache {
+    Ival arg, sin, cos;
+  };
+  std::vector<TrigCache> tc_;
+  void sincos(const Ival& a, Ival& s, Ival& c);
+  void extremum(Ival& v, const Ival& a, double off, double lo, double hi);
+  Ival pi_;
+  uint64_t dirs_ = 0;
+  Ival t1_, t2_, t3_, t4_, g_;
+};
+
+// ---- Proofs on one box (proofs.cpp): the parametric Hansen–Sengupta test of P1/P3 with a
+// recorded preconditioner and inflated box, strong regularity of C·Fx and C·Fq (P2),
+// enclosures of the sign factors, and the refutation procedure for contraction slabs and
+// discarded cells (HC4 fixpoint, false constraints, Hansen–Sengupta contraction with the
+// checker's own preconditioner, bisection). Boxes arrive as doubles, lo/hi pairs.
+struct Factor {
+  enum Kind { DetFx, DetFq, DiagFx, DiagFq, User } kind;
+  int arg = 0;  // 0-based entry or user factor
+};
+
+class Prover {
+ public:
+  explicit Prover(Evaluator& ev);
+  void load(const double* lohi);  // box := the double box
+  std::vector<Ival> box;          // nv intervals: the box the next call works on
+
+  // P1/P3: y = q̌ − GS(C·Fq(x, Q), C·f(x, q̌)), x the pose part of `box`, Q the inflated box
+  // (n lo/hi pairs), C row major. Returns nullptr on success, else why it failed. With
+  // `pose` the roles swap (V records): x unknown in Q, Fx for Fq, the commands of `box` fixed.
+  const char* newton(const double* Q, const double* C, bool pose = false);
+  std::vector<Ival> y;
+  // P2 on `box`: C_X·Fx·diag(D_X) and C_Q·Fq·diag(D_Q) strictly diagonally dominant
+  // (D positive). Keeps the Jacobians.
+  const char* regular(const double* CX, const double* CQ, const double* DX, const double* DQ);
+  // Enclosure of a factor on `box`; false if not defined there. `jac` says whether the
+  // Jacobians of `box` are already computed (by regular()).
+  bool factor(const Factor& f, bool jac, Ival& out);
+  // True when `box` provably holds no feasible solution of f = 0.
+  bool refute();
+  long refutations = 0, refute_boxes = 0;
+
+ private:
+  bool jacobians();
+  bool dominant(const std::vector<Ival>& J, const double* C, const double* D);
+  bool contract(std::vector<Ival>& b);
+  int hs_contract(std::vector<Ival>& b);
+  bool refute_rec(std::vector<Ival>& b, int depth, int& budget);
+  void product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out);
+  void rhs(const double* C);
+  void gs_row(int i, const std::vector<Ival>& X, const std::vector<Ival>& c);
+  void read_jacobian(const std::vector<int>& cols, std::vector<Ival>& J);
+  void dot(Ival& out, const double* C, const Ival* const* x);
+
+  Evaluator& ev_;
+  const Model& m_;
+  int n_, nv_;
+  uint64_t cmd_mask_ = 0, pose_mask_ = 0, all_mask_ = 0;
+  std::vector<Ival> w_, Jx_, Jq_, A_, b_;
+  Ival t1_, t2_;
+};
+
+// ---- The combinatorial half of the check (graph.cpp): a union-find, the neighbourhood
+// graph M of FORMAT.md ("claim lower-bound") built by sort-and-sweep over the output boxes
+// and their 2π-shifted copies, the separated lower bound (11), and the filtering heuristic.
+struct UnionFind {
+  std::vector<int> parent;
+  void reset(size_t n);
+  int find(int x);
+  void unite(int a, int b);
+};
+
+// Output boxes kept compactly as doubles, with their verified factor signs.
+struct OutBoxes {
+  int nv = 0;
+  std::vector<double> lohi;    // 2·nv per box
+  std::vector<uint32_t> pos, neg;  // bit i: factor i verified > 0 (resp. < 0)
+  std::vector<uint8_t> solution;
+  size_t size() const { return solution.size(); }
+  const double* box(size_t i) const { return &lohi[i * 2 * nv]; }
+};
+
+// t := x + 2πk in MPFI: the bound x of a box shifted by k periods. Its ends rounded outward
+// (graph M) or inward (links) to doubles give the shifted bound each check needs.
+void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x);
+
+// Pairs (a, b), a < b, such that for some shift k (k_v ∈ {−1, 0, 1} on periodic variables)
+// a meets b + 2πk with the shifted bounds rounded outward; a superset of the pairs that
+// share a point modulo 2π. Throws std::length_error beyond `max_pairs` pairs: boxes that
+// all overlap (one IMAGE for many cells) would make M quadratic in memory.
+std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
+                                                 const std::vector<bool>& periodic,
+                                                 const Ival& two_pi, size_t max_pairs = SIZE_MAX);
+// Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
+// with s, joined by M) holding a solution box whose signs are all verified and equal s.
+// Only the factors whose bit is set in `use` separate (the others are ignored). Throws
+// std::length_error when classes × (pairs + boxes) exceeds 2^32.
+long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, uint32_t use);
+// Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
+long filtered_count(const std::vector<int64_t>& sizes);
+
+}  // namespace cc
