@@ -96,7 +96,7 @@ using ProveCommandWitness = std::function<bool(CommandWitness&)>;
 void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc, int csncs,
                             const WitnessSpace& s, const ProveCommandWitness& prove,
                             CuspidalWitnesses& w, int64_t cap = 1000, int64_t attempts = 100000,
-                            int64_t attempts_per_box = 8,
+                            int64_t attempts_per_box = 2,
                             const ForEachIndex& for_each = serial_for_each);
 
 }  // namespace aspects

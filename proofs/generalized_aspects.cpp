@@ -476,7 +476,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     AssemblyProver& p = provers.local();
     return prove_command_witness(p.ev, out.boxes, config.tau, w, p.ws);
   };
-  find_command_witnesses(out.boxes, out.csnc, csncs, space, prove, out.cuspidal, 1000, 100000, 8,
+  find_command_witnesses(out.boxes, out.csnc, csncs, space, prove, out.cuspidal, 1000, 100000, 2,
                          in_parallel);
   lap("assembly witnesses");
   out.seconds =
