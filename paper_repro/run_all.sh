@@ -53,8 +53,8 @@ declare -A EPS_FULL=(
 # --quick: measured on 2 cores (see README.md): about 5 minutes in all. The RRRRR family
 # runs at 0.1 as in the full mode (each ~20-40 s + ~15 s check); at 0.2 the obstacle run's
 # size-ratio filter keeps 138 CSNCs. 3-RPR: eps 1.0 takes > 300 s, 1.5 takes 190 s and
-# keeps a single CSNC, 2.0 takes ~30-60 s. 3-RRR*: 0.5 takes ~35 s but its certificate is
-# currently rejected (see README.md), 0.6 keeps 6 CSNCs in ~10-30 s.
+# keeps a single CSNC, 2.0 takes ~30-60 s. 3-RRR*: 0.6 keeps 6 CSNCs in ~10-30 s (0.5 was
+# chosen against when its certificate was rejected; fixed since, see README.md).
 declare -A EPS_QUICK=(
   [prrp]=0.1 [rprpr]=0.1 [rrrrr]=0.1 [3rpr]=2.0 [3rrr_star]=0.6
   [rrrrr_collisions]=0.1 [rrrrr_joint_limit]=0.1 [rrrrr_obstacle]=0.1)
