@@ -22,8 +22,10 @@ bool restrict_to(Interval& out, const Interval& x, const Interval& dom) {
 
 }  // namespace
 
-Evaluator::Evaluator(const Dag& dag)
-    : dag_(dag), v_(dag.size()), fwd_(dag.size()), trig_arg_(dag.size()), trig_sin_(dag.size()),
+Evaluator::Evaluator(const Dag& dag, bool doubles)
+    : dag_(dag),
+      doubles_(doubles && working_precision() == 53 ? new DoubleEvaluator(dag) : nullptr),
+      v_(dag.size()), fwd_(dag.size()), trig_arg_(dag.size()), trig_sin_(dag.size()),
       trig_cos_(dag.size()), trig_ok_(dag.size(), 0) {
   mpfi_const_pi(two_pi_.get());
   mpfi_mul_2ui(two_pi_.get(), two_pi_.get(), 1);
@@ -64,7 +66,26 @@ void Evaluator::eval_pow(Interval& out, const Interval& a, int k) {
   if (k < 0) mpfi_inv(out.get(), out.get());
 }
 
+const Interval& Evaluator::value(int id) const {
+  if (from_doubles_) {
+    const DInterval d = doubles_->value(id);
+    mpfi_interv_d(v_[id].get(), d.lo, d.hi);  // exact: both ends are doubles
+  }
+  return v_[id];
+}
+
 EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
+  if (doubles_) {
+    if (std::optional<EvalStatus> s = doubles_->forward(program, box)) {
+      from_doubles_ = true;
+      return *s;
+    }
+  }
+  return forward_mpfi(program, box);
+}
+
+EvalStatus Evaluator::forward_mpfi(const std::vector<int>& program, const Box& box) {
+  from_doubles_ = false;
   EvalStatus status = EvalStatus::Defined;
   auto partial = [&]() {
     if (status == EvalStatus::Defined) status = EvalStatus::Partial;
@@ -188,7 +209,14 @@ EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
 
 bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Interval& target,
                            Box& box) {
-  if (forward(program, box) == EvalStatus::Undefined) return false;
+  if (doubles_) {
+    if (std::optional<bool> feasible =
+            doubles_->hc4_revise(program, root, {target.lo_down(), target.hi_up()}, box)) {
+      from_doubles_ = true;
+      return *feasible;
+    }
+  }
+  if (forward_mpfi(program, box) == EvalStatus::Undefined) return false;
   for (int id : program) mpfi_set(fwd_[id].get(), v_[id].get());
   if (!v_[root].intersect(target)) return false;
   for (auto it = program.rbegin(); it != program.rend(); ++it) {

@@ -4,35 +4,34 @@
 // which the constraint holds (and is defined).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "backward.h"
+#include "double_eval.h"
+#include "eval_status.h"
 #include "expr.h"
 #include "interval.h"
 #include "sincos.h"
 
 namespace aspects {
 
-enum class EvalStatus {
-  Defined,    // every node of the program is defined on the whole box
-  Partial,    // some node is undefined somewhere in the box (e.g. sqrt of [-1, 4], or
-              // the derivative of abs/min/max where a kink may lie in the box)
-  Undefined,  // some node is defined nowhere in the box: no point of the box is feasible
-};
-
 class Evaluator {
  public:
-  explicit Evaluator(const Dag& dag);
+  // doubles: use the double-endpoint fast path (core/double_eval.h) where it applies, at
+  // a working precision of 53 bits. Off, every value comes from MPFI (for tests).
+  explicit Evaluator(const Dag& dag, bool doubles = true);
 
   // Evaluates the nodes of `program` (a Dag::closure, increasing ids) on the box.
   EvalStatus forward(const std::vector<int>& program, const Box& box);
-  const Interval& value(int id) const { return v_[id]; }
+  const Interval& value(int id) const;
 
   // Contracts `box` with respect to node(root) ∈ target. Returns false when the box
   // holds no point satisfying the constraint (the box is then unspecified).
   bool hc4_revise(const std::vector<int>& program, int root, const Interval& target, Box& box);
 
  private:
+  EvalStatus forward_mpfi(const std::vector<int>& program, const Box& box);
   bool backward(int id, Box& box);
   void eval_pow(Interval& out, const Interval& a, int k);
 
@@ -43,7 +42,9 @@ class Evaluator {
   const Interval& sin_cos_of(int arg_id, const Interval& arg, Op op);
 
   const Dag& dag_;
-  std::vector<Interval> v_;
+  std::unique_ptr<DoubleEvaluator> doubles_;  // null unless at 53 bits
+  bool from_doubles_ = false;                 // the last pass ran in doubles_
+  mutable std::vector<Interval> v_;           // value() copies doubles_' values in
   std::vector<Interval> fwd_;  // forward values, to see which nodes backward narrowed
   std::vector<Interval> trig_arg_, trig_sin_, trig_cos_;
   std::vector<uint8_t> trig_ok_;

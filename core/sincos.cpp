@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace aspects {
 
-SinCos::SinCos() : doubles_(mpfr_get_default_prec() == 53) {
+SinCos::SinCos() : memo_(1024), doubles_(mpfr_get_default_prec() == 53) {
   mpfr_prec_t p = mpfr_get_default_prec();
   mpfr_inits2(p, s_lo_, c_lo_, s_hi_, c_hi_, static_cast<mpfr_ptr>(nullptr));
 }
@@ -15,8 +17,7 @@ SinCos::~SinCos() { mpfr_clears(s_lo_, c_lo_, s_hi_, c_hi_, static_cast<mpfr_ptr
 // The test runs in double on [lo_d, hi_d] ⊇ [a]. For |t| <= 2^20, u = t / (π/2) computed
 // in double is within 2^20/(π/2) · 2^-51 < 4e-10 of the exact quotient, so with a margin
 // of 1e-9 an integer (a multiple of π/2) cannot hide in [u_lo, u_hi].
-bool SinCos::inside_one_quadrant(const Interval& a, long& j) {
-  double lo = a.lo_down(), hi = a.hi_up();
+bool SinCos::inside_one_quadrant(double lo, double hi, long& j) {
   const double limit = 1048576.0;  // 2^20
   if (!(lo >= -limit && hi <= limit)) return false;  // also rejects NaN
   const double margin = 1e-9;
@@ -27,28 +28,60 @@ bool SinCos::inside_one_quadrant(const Interval& a, long& j) {
   return true;
 }
 
+void SinCos::monotony(long j, bool& sin_up, bool& cos_up) {
+  // On (jπ/2, (j+1)π/2): sin increases in quadrants 0 and 3 (mod 4), cos in 2 and 3.
+  const long quadrant = ((j % 4) + 4) % 4;
+  sin_up = quadrant == 0 || quadrant == 3;
+  cos_up = quadrant == 2 || quadrant == 3;
+}
+
 void SinCos::enclose(const Interval& a, Interval& s, Interval& c) {
+  if (doubles_) {
+    DInterval ds, dc;
+    if (enclose_doubles(a.lo_down(), a.hi_up(), ds, dc)) {
+      mpfi_interv_d(s.get(), ds.lo, ds.hi);
+      mpfi_interv_d(c.get(), dc.lo, dc.hi);
+      return;
+    }
+  }
   long j = 0;
-  if (!inside_one_quadrant(a, j)) {
+  if (doubles_ || !inside_one_quadrant(a.lo_down(), a.hi_up(), j)) {
     mpfi_sin(s.get(), a.get());
     mpfi_cos(c.get(), a.get());
     return;
   }
-  // On (jπ/2, (j+1)π/2): sin increases in quadrants 0 and 3 (mod 4), cos in 2 and 3.
-  const long quadrant = ((j % 4) + 4) % 4;
-  const bool sin_up = quadrant == 0 || quadrant == 3;
-  const bool cos_up = quadrant == 2 || quadrant == 3;
-  if (!doubles_) {
-    enclose_mpfr(a, sin_up, cos_up, s, c);
-    return;
-  }
+  bool sin_up, cos_up;
+  monotony(j, sin_up, cos_up);
+  enclose_mpfr(a, sin_up, cos_up, s, c);
+}
+
+bool SinCos::enclose_doubles(double lo, double hi, DInterval& s, DInterval& c) {
+  long j = 0;
+  if (!doubles_ || !inside_one_quadrant(lo, hi, j)) return false;
+  bool sin_up, cos_up;
+  monotony(j, sin_up, cos_up);
   double sl[2], sh[2], cl[2], ch[2];  // bounds at the lower [0] and upper [1] end
-  arb_.sin_cos(a.lo_down(), sl[0], sh[0], cl[0], ch[0]);
-  const int u = a.lo_down() == a.hi_up() ? 0 : 1;  // a point: both ends are one
-  if (u == 1) arb_.sin_cos(a.hi_up(), sl[1], sh[1], cl[1], ch[1]);
+  arb_sin_cos(lo, sl[0], sh[0], cl[0], ch[0]);
+  const int u = lo == hi ? 0 : 1;  // a point: both ends are one
+  if (u == 1) arb_sin_cos(hi, sl[1], sh[1], cl[1], ch[1]);
   // Monotone on the quadrant: the minimum is at one end, the maximum at the other.
-  mpfi_interv_d(s.get(), std::max(-1.0, sl[sin_up ? 0 : u]), std::min(1.0, sh[sin_up ? u : 0]));
-  mpfi_interv_d(c.get(), std::max(-1.0, cl[cos_up ? 0 : u]), std::min(1.0, ch[cos_up ? u : 0]));
+  s = {std::max(-1.0, sl[sin_up ? 0 : u]), std::min(1.0, sh[sin_up ? u : 0])};
+  c = {std::max(-1.0, cl[cos_up ? 0 : u]), std::min(1.0, ch[cos_up ? u : 0])};
+  return true;
+}
+
+void SinCos::arb_sin_cos(double t, double& s_lo, double& s_hi, double& c_lo, double& c_hi) {
+  uint64_t bits;
+  std::memcpy(&bits, &t, sizeof bits);
+  Memo& m = memo_[(bits * 0x9E3779B97F4A7C15ull) >> 54];  // 1024 slots
+  if (m.t != t) {  // NaN marks an empty slot; ±0 share one (same bounds)
+    arb_.sin_cos(t, m.s_lo, m.s_hi, m.c_lo, m.c_hi);
+    m.t = t;
+  }
+  s_lo = m.s_lo;
+  s_hi = m.s_hi;
+  c_lo = m.c_lo;
+  c_hi = m.c_hi;
 }
 
 void SinCos::enclose_mpfr(const Interval& a, bool sin_up, bool cos_up, Interval& s, Interval& c) {

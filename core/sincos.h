@@ -13,7 +13,11 @@
 
 #include <mpfr.h>
 
+#include <cmath>
+#include <vector>
+
 #include "arb_bounds.h"
+#include "double_interval.h"
 #include "interval.h"
 
 namespace aspects {
@@ -27,11 +31,23 @@ class SinCos {
 
   // s ⊇ {sin t : t ∈ a}, c ⊇ {cos t : t ∈ a}.
   void enclose(const Interval& a, Interval& s, Interval& c);
+  // The same at 53 bits for a = [lo, hi] (doubles) inside one quadrant, in doubles. False,
+  // with nothing computed, at another precision or when a may hold a multiple of π/2.
+  bool enclose_doubles(double lo, double hi, DInterval& s, DInterval& c);
 
  private:
-  // True, with the quadrant index j (a ⊂ (jπ/2, (j+1)π/2)), when that is certain.
-  static bool inside_one_quadrant(const Interval& a, long& j);
+  // True, with the quadrant index j ([lo, hi] ⊂ (jπ/2, (j+1)π/2)), when that is certain.
+  static bool inside_one_quadrant(double lo, double hi, long& j);
+  // Which of sin and cos increase on quadrant j.
+  static void monotony(long j, bool& sin_up, bool& cos_up);
   void enclose_mpfr(const Interval& a, bool sin_up, bool cos_up, Interval& s, Interval& c);
+  // Arb's bounds at one point, remembered: a box's children share an end with it, and
+  // the proofs evaluate the same box several times (direct mapped on the point's bits).
+  void arb_sin_cos(double t, double& s_lo, double& s_hi, double& c_lo, double& c_hi);
+  struct Memo {
+    double t = NAN, s_lo, s_hi, c_lo, c_hi;
+  };
+  std::vector<Memo> memo_;
   bool doubles_;  // the working precision is 53 bits
   mpfr_t s_lo_, c_lo_, s_hi_, c_hi_;
   ArbBounds arb_;
