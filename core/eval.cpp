@@ -74,6 +74,11 @@ const Interval& Evaluator::value(int id) const {
   return v_[id];
 }
 
+DInterval Evaluator::value_d(int id) const {
+  if (from_doubles_) return doubles_->value(id);
+  return {v_[id].lo_down(), v_[id].hi_up()};
+}
+
 EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
   if (doubles_) {
     if (std::optional<EvalStatus> s = doubles_->forward(program, box)) {

@@ -25,6 +25,8 @@ class Evaluator {
   // Evaluates the nodes of `program` (a Dag::closure, increasing ids) on the box.
   EvalStatus forward(const std::vector<int>& program, const Box& box);
   const Interval& value(int id) const;
+  // The same with double ends (rounded outward; exact at 53 bits).
+  DInterval value_d(int id) const;
 
   // Contracts `box` with respect to node(root) ∈ target. Returns false when the box
   // holds no point satisfying the constraint (the box is then unspecified).

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "double_interval.h"
+
 namespace aspects {
 
 // Precision (bits) of every interval created after the call. Call once at start-up,
@@ -88,20 +90,23 @@ inline int certain_sign(const Interval& a) {
 // Interval vector; variables in model order.
 using Box = std::vector<Interval>;
 
-// Dense interval matrix, row major.
-class IMatrix {
+// Dense matrix, row major: of Interval (IMatrix) or of DInterval (DMatrix, 53 bits).
+template <class T>
+class Matrix {
  public:
-  IMatrix() = default;
-  IMatrix(int rows, int cols) : rows_(rows), cols_(cols), a_(size_t(rows) * cols) {}
+  Matrix() = default;
+  Matrix(int rows, int cols) : rows_(rows), cols_(cols), a_(size_t(rows) * cols) {}
   int rows() const { return rows_; }
   int cols() const { return cols_; }
-  Interval& operator()(int i, int j) { return a_[size_t(i) * cols_ + j]; }
-  const Interval& operator()(int i, int j) const { return a_[size_t(i) * cols_ + j]; }
+  T& operator()(int i, int j) { return a_[size_t(i) * cols_ + j]; }
+  const T& operator()(int i, int j) const { return a_[size_t(i) * cols_ + j]; }
 
  private:
   int rows_ = 0, cols_ = 0;
-  std::vector<Interval> a_;
+  std::vector<T> a_;
 };
+using IMatrix = Matrix<Interval>;
+using DMatrix = Matrix<DInterval>;
 
 // max width over the box (upper bound).
 double box_width(const Box& b);

@@ -10,27 +10,48 @@ ModelEvaluator::ModelEvaluator(const Model& m)
   for (int e : m.equations) prog_eq_.push_back(m.dag.closure({e}));
 }
 
-EvalStatus ModelEvaluator::equations(const Box& box, std::vector<Interval>& f) {
-  EvalStatus s = ev_.forward(prog_f_, box);
-  f.resize(m_.equations.size());
-  for (size_t i = 0; i < m_.equations.size(); ++i) f[i] = ev_.value(m_.equations[i]);
-  return s;
-}
+namespace {
 
-static EvalStatus eval_matrix(Evaluator& ev, const std::vector<int>& prog,
-                              const std::vector<int>& nodes, int n, const Box& box, IMatrix& J) {
+void read_value(const Evaluator& ev, int id, Interval& out) { out = ev.value(id); }
+void read_value(const Evaluator& ev, int id, DInterval& out) { out = ev.value_d(id); }
+
+template <class I>
+EvalStatus eval_vector(Evaluator& ev, const std::vector<int>& prog, const std::vector<int>& nodes,
+                       const Box& box, std::vector<I>& f) {
   EvalStatus s = ev.forward(prog, box);
-  if (J.rows() != n || J.cols() != n) J = IMatrix(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) J(i, j) = ev.value(nodes[i * n + j]);
+  f.resize(nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i) read_value(ev, nodes[i], f[i]);
   return s;
 }
 
+template <class I>
+EvalStatus eval_matrix(Evaluator& ev, const std::vector<int>& prog, const std::vector<int>& nodes,
+                       int n, const Box& box, Matrix<I>& J) {
+  EvalStatus s = ev.forward(prog, box);
+  if (J.rows() != n || J.cols() != n) J = Matrix<I>(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) read_value(ev, nodes[i * n + j], J(i, j));
+  return s;
+}
+
+}  // namespace
+
+EvalStatus ModelEvaluator::equations(const Box& box, std::vector<Interval>& f) {
+  return eval_vector(ev_, prog_f_, m_.equations, box, f);
+}
+EvalStatus ModelEvaluator::equations(const Box& box, std::vector<DInterval>& f) {
+  return eval_vector(ev_, prog_f_, m_.equations, box, f);
+}
 EvalStatus ModelEvaluator::jacobian_q(const Box& box, IMatrix& J) {
   return eval_matrix(ev_, prog_fq_, m_.fq, n(), box, J);
 }
-
+EvalStatus ModelEvaluator::jacobian_q(const Box& box, DMatrix& J) {
+  return eval_matrix(ev_, prog_fq_, m_.fq, n(), box, J);
+}
 EvalStatus ModelEvaluator::jacobian_x(const Box& box, IMatrix& J) {
+  return eval_matrix(ev_, prog_fx_, m_.fx, n(), box, J);
+}
+EvalStatus ModelEvaluator::jacobian_x(const Box& box, DMatrix& J) {
   return eval_matrix(ev_, prog_fx_, m_.fx, n(), box, J);
 }
 

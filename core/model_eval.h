@@ -21,6 +21,10 @@ class ModelEvaluator {
   // Fq (or Fx) over the box, n×n.
   EvalStatus jacobian_q(const Box& box, IMatrix& J);
   EvalStatus jacobian_x(const Box& box, IMatrix& J);
+  // The same with double ends, for a working precision of 53 bits (exact there).
+  EvalStatus equations(const Box& box, std::vector<DInterval>& f);
+  EvalStatus jacobian_q(const Box& box, DMatrix& J);
+  EvalStatus jacobian_x(const Box& box, DMatrix& J);
   // Any set of nodes (e.g. separation factors): values readable through value().
   EvalStatus nodes(const std::vector<int>& program, const Box& box) {
     return ev_.forward(program, box);

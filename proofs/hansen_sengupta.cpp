@@ -2,65 +2,80 @@
 
 #include <cmath>
 
+#include "interval_ops.h"
 #include "preconditioner.h"
 
 namespace aspects {
 
 void round_out_to_doubles(Interval& x) { x.set_hull(x.lo_down(), x.hi_up()); }
 
-HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
-                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose) {
+namespace {
+
+template <class I>
+HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<Interval>& image,
+               HsWorkspace& ws, HsArrays<I>& w, bool in_pose) {
+  using namespace iops;
   const Model& m = ev.model();
   const int n = m.n();
   const std::vector<int>& u = in_pose ? m.pose : m.command;  // the unknowns
   // Mean-value form around a point of [q]: f(x,q) = f(x,q̌) + Fq(x,ξ)(q − q̌).
   ws.mid_box = box;
   std::vector<double> qmid(n);
+  w.q.resize(n);
   for (int j = 0; j < n; ++j) {
     qmid[j] = box[u[j]].mid();
     if (!std::isfinite(qmid[j])) return HsStatus::Failed;
     ws.mid_box[u[j]].set_point(qmid[j]);
+    assign(w.q[j], box[u[j]]);
   }
-  if (ev.equations(ws.mid_box, ws.f0) != EvalStatus::Defined) return HsStatus::Failed;
-  const EvalStatus J = in_pose ? ev.jacobian_x(box, ws.J) : ev.jacobian_q(box, ws.J);
+  if (ev.equations(ws.mid_box, w.f0) != EvalStatus::Defined) return HsStatus::Failed;
+  const EvalStatus J = in_pose ? ev.jacobian_x(box, w.J) : ev.jacobian_q(box, w.J);
   if (J != EvalStatus::Defined) return HsStatus::Failed;
-  if (!approximate_inverse(ws.J, ws.C)) return HsStatus::Failed;
-  if (ws.A.rows() != n) ws.A = IMatrix(n, n);
-  ws.b.resize(n);
+  if (!approximate_inverse(w.J, ws.C)) return HsStatus::Failed;
+  if (w.A.rows() != n) w.A = Matrix<I>(n, n);
+  w.b.resize(n);
   for (int i = 0; i < n; ++i) {
-    preconditioned_entry(ws.C, ws.f0, i, ws.b[i], ws.t1);
-    for (int j = 0; j < n; ++j) preconditioned_entry(ws.C, ws.J, i, j, ws.A(i, j), ws.t1);
+    preconditioned_entry(ws.C, w.f0, i, w.b[i], w.t1);
+    for (int j = 0; j < n; ++j) preconditioned_entry(ws.C, w.J, i, j, w.A(i, j), w.t1);
   }
-  image.resize(n);
   // Gauss–Seidel: component j < i uses its new value (intersected with the box).
-  std::vector<Interval>& y = image;
+  std::vector<I>& y = w.y;
+  y.resize(n);
   for (int i = 0; i < n; ++i) {
-    if (ws.A(i, i).contains_zero()) return HsStatus::Failed;
-    mpfi_set(ws.t2.get(), ws.b[i].get());
+    if (contains_zero(w.A(i, i))) return HsStatus::Failed;
+    w.t2 = w.b[i];
     for (int j = 0; j < n; ++j) {
       if (j == i) continue;
-      const Interval& qj = box[u[j]];
       if (j < i) {
-        mpfi_intersect(ws.t1.get(), y[j].get(), qj.get());
-        if (ws.t1.empty()) return HsStatus::NoSolution;
+        if (!meet_of(w.t1, y[j], w.q[j])) return HsStatus::NoSolution;
       } else {
-        mpfi_set(ws.t1.get(), qj.get());
+        w.t1 = w.q[j];
       }
-      mpfi_sub_d(ws.t1.get(), ws.t1.get(), qmid[j]);
-      mpfi_mul(ws.t1.get(), ws.t1.get(), ws.A(i, j).get());
-      mpfi_add(ws.t2.get(), ws.t2.get(), ws.t1.get());
+      sub_d(w.t1, qmid[j]);
+      mul_into(w.t1, w.A(i, j));
+      add_to(w.t2, w.t1);
     }
-    mpfi_div(ws.t2.get(), ws.t2.get(), ws.A(i, i).get());
-    mpfi_d_sub(y[i].get(), qmid[i], ws.t2.get());
-    if (!y[i].bounded() || y[i].empty()) return HsStatus::Failed;
+    div_into(w.t2, w.A(i, i));
+    d_sub(y[i], qmid[i], w.t2);
+    if (!usable(y[i])) return HsStatus::Failed;
     if (intersect) {
-      if (!y[i].intersect(box[u[i]])) return HsStatus::NoSolution;
+      if (!meet_of(y[i], y[i], w.q[i])) return HsStatus::NoSolution;
     } else {
-      mpfi_intersect(ws.t1.get(), y[i].get(), box[u[i]].get());
-      if (ws.t1.empty()) return HsStatus::NoSolution;
+      if (!meet_of(w.t1, y[i], w.q[i])) return HsStatus::NoSolution;
     }
   }
+  image.resize(n);
+  for (int i = 0; i < n; ++i) store(image[i], y[i]);
   return HsStatus::Ok;
+}
+
+}  // namespace
+
+HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
+                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose) {
+  ws.in_doubles = ws.doubles_allowed && working_precision() == 53;
+  if (ws.in_doubles) return sweep(ev, box, intersect, image, ws, ws.doubles, in_pose);
+  return sweep(ev, box, intersect, image, ws, ws.mpfi, in_pose);
 }
 
 namespace {
@@ -68,12 +83,17 @@ namespace {
 // Row i of the sweep divides C·f([x], mid q) by (C·Fq)_ii: the quotient is at least
 // w(b_i) / mag(A_ii) wide whatever the commands, so when that is half the box or more,
 // the pose's spread blocks the inclusion (a heuristic for the bisector, not a proof).
-bool pose_spreads(const HsWorkspace& ws, const std::vector<Interval>& q) {
+template <class I>
+bool pose_spreads(const HsArrays<I>& w, const std::vector<Interval>& q) {
   for (size_t i = 0; i < q.size(); ++i) {
-    double mag = std::max(std::fabs(ws.A(i, i).lo_down()), std::fabs(ws.A(i, i).hi_up()));
-    if (ws.b[i].width_up() >= 0.5 * mag * q[i].width_up()) return true;
+    double mag = std::max(std::fabs(iops::lo(w.A(i, i))), std::fabs(iops::hi(w.A(i, i))));
+    if (iops::width(w.b[i]) >= 0.5 * mag * q[i].width_up()) return true;
   }
   return false;
+}
+
+bool pose_spreads(const HsWorkspace& ws, const std::vector<Interval>& q) {
+  return ws.in_doubles ? pose_spreads(ws.doubles, q) : pose_spreads(ws.mpfi, q);
 }
 
 }  // namespace

@@ -21,13 +21,23 @@ enum class HsStatus {
   Failed,    // operator not applicable: f undefined somewhere, (C·Fq)_ii ∋ 0, singular mid
 };
 
+// The arrays of one sweep, with MPFI ends or with double ends.
+template <class I>
+struct HsArrays {
+  std::vector<I> f0, b, q, y;  // q: the unknowns' box, y: their image
+  Matrix<I> J, A;
+  I t1, t2;
+};
+
+// At a working precision of 53 bits the sweep runs on doubles (the same ends as MPFI,
+// core/interval_ops.h); otherwise on MPFI.
 struct HsWorkspace {
-  std::vector<Interval> f0;
-  IMatrix J, A;
-  std::vector<Interval> b;
+  HsArrays<Interval> mpfi;
+  HsArrays<DInterval> doubles;
+  bool in_doubles = false;  // the arrays the last sweep filled
+  bool doubles_allowed = true;  // false: MPFI at 53 bits too (tests compare the two)
   std::vector<double> C;
   Box mid_box;
-  Interval t1, t2;
 };
 
 // One Hansen–Sengupta sweep on the command part of `box` (model order). The image of

@@ -3,14 +3,17 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "interval_ops.h"
+
 namespace aspects {
 
-bool approximate_inverse(const IMatrix& A, std::vector<double>& C) {
+template <class I>
+bool approximate_inverse(const Matrix<I>& A, std::vector<double>& C) {
   int n = A.rows();
   Eigen::MatrixXd M(n, n);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      double m = A(i, j).mid();
+      double m = iops::mid(A(i, j));
       if (!std::isfinite(m)) return false;
       M(i, j) = m;
     }
@@ -26,24 +29,37 @@ bool approximate_inverse(const IMatrix& A, std::vector<double>& C) {
   return true;
 }
 
-void preconditioned_entry(const std::vector<double>& C, const IMatrix& A, int i, int j,
-                          Interval& out, Interval& term) {
+template <class I>
+void preconditioned_entry(const std::vector<double>& C, const Matrix<I>& A, int i, int j, I& out,
+                          I& term) {
   const int n = A.rows();
-  mpfi_set_si(out.get(), 0);
+  iops::set_zero(out);
   for (int k = 0; k < n; ++k) {
-    mpfi_mul_d(term.get(), A(k, j).get(), C[size_t(i) * n + k]);
-    mpfi_add(out.get(), out.get(), term.get());
+    iops::mul_d(term, A(k, j), C[size_t(i) * n + k]);
+    iops::add_to(out, term);
   }
 }
 
-void preconditioned_entry(const std::vector<double>& C, const std::vector<Interval>& v, int i,
-                          Interval& out, Interval& term) {
+template <class I>
+void preconditioned_entry(const std::vector<double>& C, const std::vector<I>& v, int i, I& out,
+                          I& term) {
   const int n = int(v.size());
-  mpfi_set_si(out.get(), 0);
+  iops::set_zero(out);
   for (int k = 0; k < n; ++k) {
-    mpfi_mul_d(term.get(), v[k].get(), C[size_t(i) * n + k]);
-    mpfi_add(out.get(), out.get(), term.get());
+    iops::mul_d(term, v[k], C[size_t(i) * n + k]);
+    iops::add_to(out, term);
   }
 }
+
+template bool approximate_inverse(const IMatrix&, std::vector<double>&);
+template bool approximate_inverse(const DMatrix&, std::vector<double>&);
+template void preconditioned_entry(const std::vector<double>&, const IMatrix&, int, int,
+                                   Interval&, Interval&);
+template void preconditioned_entry(const std::vector<double>&, const DMatrix&, int, int,
+                                   DInterval&, DInterval&);
+template void preconditioned_entry(const std::vector<double>&, const std::vector<Interval>&, int,
+                                   Interval&, Interval&);
+template void preconditioned_entry(const std::vector<double>&, const std::vector<DInterval>&, int,
+                                   DInterval&, DInterval&);
 
 }  // namespace aspects

@@ -13,14 +13,18 @@ namespace aspects {
 
 // Approximate inverse of mid([A]) in double, row major; false if mid([A]) is
 // numerically singular or an entry is not finite (the caller then reports "not proved").
-bool approximate_inverse(const IMatrix& A, std::vector<double>& C);
+// For Interval and for DInterval (53 bits) matrices.
+template <class I>
+bool approximate_inverse(const Matrix<I>& A, std::vector<double>& C);
 
 // out ⊇ Σ_k C(i, k)·[A](k, j), the entry (i, j) of C·[A]; `term` is scratch.
-void preconditioned_entry(const std::vector<double>& C, const IMatrix& A, int i, int j,
-                          Interval& out, Interval& term);
+template <class I>
+void preconditioned_entry(const std::vector<double>& C, const Matrix<I>& A, int i, int j, I& out,
+                          I& term);
 
 // out ⊇ Σ_k C(i, k)·[v]_k, the entry i of C·[v]; `term` is scratch.
-void preconditioned_entry(const std::vector<double>& C, const std::vector<Interval>& v, int i,
-                          Interval& out, Interval& term);
+template <class I>
+void preconditioned_entry(const std::vector<double>& C, const std::vector<I>& v, int i, I& out,
+                          I& term);
 
 }  // namespace aspects

@@ -9,7 +9,7 @@
 // Seen failing (each break made in proofs/hansen_sengupta.cpp, then reverted):
 //  - prove_existence with `if (inside)` replaced by `if (true)`: NoRootIsNeverClaimed and
 //    RandomBoxesAgreeWithTheExactRoots fail;
-//  - `mpfi_d_sub(y[i], qmid[i], t2)` replaced by `mpfi_add_d(y[i], t2, qmid[i])` (Newton
+//  - `d_sub(y[i], qmid[i], w.t2)` replaced by `y[i] = w.t2; add_d(...)` (Newton
 //    step of the wrong sign): UniqueRootIsInTheImage, UniqueRootOfA2x2SystemIsInTheImage
 //    and RandomBoxesAgreeWithTheExactRoots fail;
 //  - Fq evaluated on ws.mid_box instead of the box (no mean-value form): the two
@@ -19,13 +19,16 @@
 //    NoRootIsNeverClaimed and RandomBoxesAgreeWithTheExactRoots fail.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "hansen_sengupta.h"
 #include "model.h"
 #include "model_eval.h"
+#include "robot_refs.h"
 #include "test_util.h"
 
 using namespace aspects;
@@ -261,4 +264,56 @@ TEST_F(HansenSengupta, InPoseProvesThePoseOfAPointCommand) {
   EXPECT_NE(prove_existence(ev, box1(2.5, 3, 1.5, 1.5), 1.01, 8, p, ws, true), Existence::Proved);
   // The command version on the same box refuses: the command is a point, not a box of q.
   EXPECT_NE(prove_existence(ev, box1(2, 2.5, 1.5, 1.5), 1.01, 8, p, ws), Existence::Proved);
+}
+
+// At 53 bits the sweep runs on doubles: on boxes around points of the robots' surfaces
+// (robot_refs.h) it must give MPFI's status, preconditioner and image end for end, and
+// the existence proofs must agree.
+TEST_F(HansenSengupta, DoublesGiveMpfisSweepOnTheRobots) {
+  int compared = 0, proved = 0;
+  std::mt19937 g(99);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (const aspects_test::RobotRef& ref : aspects_test::robot_refs()) {
+    std::ifstream in(ref.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    Model m = parse_model(text.str(), ref.path());
+    ModelEvaluator ev(m);
+    HsWorkspace wd, wm;
+    wm.doubles_allowed = false;
+    for (int trial = 0; trial < 100; ++trial) {
+      const aspects_test::Point p = ref.solution(g);
+      Box box(p.size());
+      for (size_t v = 0; v < p.size(); ++v) {
+        double c = p[v].d(), w = std::ldexp(1.0, -2 - int(U(g) * 14));
+        box[v].set_hull(c - w * U(g), c + w * U(g));
+      }
+      std::vector<Interval> yd, ym;
+      for (bool intersect : {false, true}) {
+        HsStatus sd = hansen_sengupta(ev, box, intersect, yd, wd);
+        HsStatus sm = hansen_sengupta(ev, box, intersect, ym, wm);
+        ASSERT_TRUE(wd.in_doubles);
+        ASSERT_FALSE(wm.in_doubles);
+        ASSERT_EQ(sd, sm) << ref.file << " trial " << trial;
+        if (sd != HsStatus::Ok) continue;
+        ++compared;
+        ASSERT_EQ(wd.C, wm.C);
+        for (size_t j = 0; j < yd.size(); ++j) {
+          ASSERT_EQ(yd[j].lo_down(), ym[j].lo_down()) << ref.file << " trial " << trial;
+          ASSERT_EQ(yd[j].hi_up(), ym[j].hi_up()) << ref.file << " trial " << trial;
+        }
+      }
+      ExistenceProof pd, pm;
+      Existence ed = prove_existence(ev, box, 1.01, 8, pd, wd);
+      ASSERT_EQ(ed, prove_existence(ev, box, 1.01, 8, pm, wm)) << ref.file << " trial " << trial;
+      if (ed == Existence::Proved) {
+        ++proved;
+        ASSERT_EQ(pd.iterations, pm.iterations);
+        for (size_t j = 0; j < pd.image.size(); ++j)
+          ASSERT_EQ(pd.image[j].hi_up(), pm.image[j].hi_up());
+      }
+    }
+  }
+  EXPECT_GT(compared, 200);  // not vacuous
+  EXPECT_GT(proved, 50);
 }
