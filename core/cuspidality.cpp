@@ -273,8 +273,4 @@ void find_command_witnesses(const BoxStore& R, const std::vector<int32_t>& csnc,
     for (auto& cw : f) w.command.push_back(std::move(cw));
 }
 
-void serial_for_each(int csncs, const std::function<void(int32_t)>& body) {
-  for (int32_t c = 0; c < csncs; ++c) body(c);
-}
-
 }  // namespace aspects

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "box_store.h"
+#include "for_each_index.h"
 #include "interval.h"
 
 namespace aspects {
@@ -71,11 +72,7 @@ bool poses_overlap(const BoxStore& R, int a, int b, const std::vector<int>& k,
 // the command is not periodic), proved with the shifted ends rounded outward.
 bool commands_disjoint(const BoxStore& R, int a, int b, const WitnessSpace& s);
 
-// Runs body(i) for every i < n, in any order and possibly at once. The searches use it
-// over CSNCs and over the candidates of one CSNC, whose bodies share nothing but the
-// boxes: the results do not depend on the order.
-using ForEachIndex = std::function<void(int n, const std::function<void(int32_t)>& body)>;
-void serial_for_each(int n, const std::function<void(int32_t)>& body);
+// The searches run a ForEachIndex over CSNCs and over the candidates of one CSNC.
 
 // csnc: CSNC of each box (-1: not a solution box); csncs: number of CSNCs. At most `cap`
 // witnesses per CSNC.

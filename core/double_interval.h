@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace aspects {
 
@@ -25,8 +27,18 @@ struct DInterval {
 
 namespace dround {
 
-inline double next_down(double x) { return std::nextafter(x, -INFINITY); }
-inline double next_up(double x) { return std::nextafter(x, INFINITY); }
+// The neighbours of a double, from its bits (std::nextafter is a library call, and these
+// run several times per operation).
+inline double next_up(double x) {
+  if (!(x < INFINITY)) return x;    // +∞ and NaN stay
+  if (x == 0) return DBL_TRUE_MIN;  // from either zero
+  uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  b += x > 0 ? 1 : -1;  // the magnitude's next encoding up (x > 0) or down (x < 0)
+  std::memcpy(&x, &b, sizeof x);
+  return x;
+}
+inline double next_down(double x) { return -next_up(-x); }
 
 // Below this magnitude an FMA residual may underflow (lose bits): step outward regardless.
 constexpr double kTiny = 0x1p-900;

@@ -91,62 +91,83 @@ struct Query {
 }  // namespace
 
 std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
-                                         const std::vector<bool>& periodic) {
+                                         const std::vector<bool>& periodic,
+                                         const ForEachIndex& for_each) {
   const int nv = R.nv();
   std::vector<int> pvars;
   for (int v = 0; v < nv; ++v)
     if (periodic[v]) pvars.push_back(v);
-  Interval two_pi, t;
-  mpfi_const_pi(two_pi.get());
-  mpfi_mul_ui(two_pi.get(), two_pi.get(), 2);
-
-  std::vector<NeighborPair> out;
-  std::vector<double> hull = subtree_hulls(tree, R);
-  Query q{tree, R, hull, std::vector<double>(nv), std::vector<double>(nv), 0,
-          std::vector<int>(nv, 0), two_pi, Interval(), &out};
   int combos = 1;
   for (size_t i = 0; i < pvars.size(); ++i) combos *= 3;
-  std::vector<int> k(nv, 0);
-  for (int id = 0; id < R.size(); ++id) {
-    for (int c = 0; c < combos; ++c) {
-      int code = c;
-      std::fill(k.begin(), k.end(), 0);
-      for (int v : pvars) {
-        k[v] = code % 3 - 1;
-        code /= 3;
-      }
-      // Query box a + 2πk meets b  ⇔  b − 2πk meets a: b is tested with shift −k. The
-      // query only filters (widened by far more than any rounding); meets_shifted decides.
-      // No shifted query is skipped: output boxes may leave the domain (a periodic
-      // command's image crosses its seam), so one that misses it may still meet a box.
-      for (int v = 0; v < nv; ++v) {
-        q.back[v] = -k[v];
-        if (k[v] == 0) {
-          q.lo[v] = R.lo(id, v);
-          q.hi[v] = R.hi(id, v);
-          continue;
+  const std::vector<double> hull = subtree_hulls(tree, R);
+  Interval two_pi_shared;
+  mpfi_const_pi(two_pi_shared.get());
+  mpfi_mul_ui(two_pi_shared.get(), two_pi_shared.get(), 2);
+
+  // Blocks of consecutive boxes a, each with its own output: sorted within the block,
+  // they concatenate in (a, b) order.
+  const int block = 2048, blocks = (R.size() + block - 1) / block;
+  std::vector<std::vector<NeighborPair>> found(blocks);
+  for_each(blocks, [&](int32_t blk) {
+    // Per block, copies at the shared value's precision (a worker thread's default
+    // precision may differ, and M must not depend on the thread).
+    Interval two_pi = two_pi_shared, t = two_pi_shared;
+    std::vector<NeighborPair>& out = found[blk];
+    Query q{tree, R, hull, std::vector<double>(nv), std::vector<double>(nv), 0,
+            std::vector<int>(nv, 0), two_pi, two_pi_shared, &out};
+    std::vector<int> k(nv, 0);
+    const int end = std::min(R.size(), (blk + 1) * block);
+    for (int id = blk * block; id < end; ++id) {
+      for (int c = 0; c < combos; ++c) {
+        int code = c;
+        std::fill(k.begin(), k.end(), 0);
+        for (int v : pvars) {
+          k[v] = code % 3 - 1;
+          code /= 3;
         }
-        mpfi_mul_si(t.get(), two_pi.get(), k[v]);
-        mpfi_add_d(t.get(), t.get(), R.lo(id, v));
-        q.lo[v] = t.lo_down() - 1e-9 * (1 + std::fabs(t.lo_down()));
-        mpfi_mul_si(t.get(), two_pi.get(), k[v]);
-        mpfi_add_d(t.get(), t.get(), R.hi(id, v));
-        q.hi[v] = t.hi_up() + 1e-9 * (1 + std::fabs(t.hi_up()));
+        // Query box a + 2πk meets b  ⇔  b − 2πk meets a: b is tested with shift −k. The
+        // query only filters (widened by far more than any rounding); meets_shifted
+        // decides. No shifted query is skipped: output boxes may leave the domain (a
+        // periodic command's image crosses its seam), so one that misses it may still
+        // meet a box.
+        for (int v = 0; v < nv; ++v) {
+          q.back[v] = -k[v];
+          if (k[v] == 0) {
+            q.lo[v] = R.lo(id, v);
+            q.hi[v] = R.hi(id, v);
+            continue;
+          }
+          mpfi_mul_si(t.get(), two_pi.get(), k[v]);
+          mpfi_add_d(t.get(), t.get(), R.lo(id, v));
+          q.lo[v] = t.lo_down() - 1e-9 * (1 + std::fabs(t.lo_down()));
+          mpfi_mul_si(t.get(), two_pi.get(), k[v]);
+          mpfi_add_d(t.get(), t.get(), R.hi(id, v));
+          q.hi[v] = t.hi_up() + 1e-9 * (1 + std::fabs(t.hi_up()));
+        }
+        q.self = id;
+        q.visit(0);
       }
-      q.self = id;
-      q.visit(0);
     }
-  }
-  // A pair met through two shifts (boxes spanning a whole period) is kept once.
-  std::sort(out.begin(), out.end(), [](const NeighborPair& x, const NeighborPair& y) {
-    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.shift_code < y.shift_code;
+    // A pair met through two shifts (boxes spanning a whole period) is kept once.
+    std::sort(out.begin(), out.end(), [](const NeighborPair& x, const NeighborPair& y) {
+      return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.shift_code < y.shift_code;
+    });
+    out.erase(std::unique(out.begin(), out.end(),
+                          [](const NeighborPair& x, const NeighborPair& y) {
+                            return x.a == y.a && x.b == y.b;
+                          }),
+              out.end());
+    out.shrink_to_fit();
   });
-  out.erase(std::unique(out.begin(), out.end(),
-                        [](const NeighborPair& x, const NeighborPair& y) {
-                          return x.a == y.a && x.b == y.b;
-                        }),
-            out.end());
-  return out;
+  size_t total = 0;
+  for (const auto& f : found) total += f.size();
+  std::vector<NeighborPair> pairs;
+  pairs.reserve(total);
+  for (auto& f : found) {
+    pairs.insert(pairs.end(), f.begin(), f.end());
+    std::vector<NeighborPair>().swap(f);  // freed as it goes: the peak stays near one copy
+  }
+  return pairs;
 }
 
 }  // namespace aspects

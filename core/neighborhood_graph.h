@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "for_each_index.h"
+
 #include "box_store.h"
 #include "branch_and_prune.h"
 
@@ -24,7 +26,10 @@ struct NeighborPair {
 // Packs a shift vector (at most 16 variables).
 uint32_t pack_shift(const std::vector<int>& k);
 
+// Sorted by (a, b), each pair once. The boxes are queried in blocks run by `for_each`;
+// the result does not depend on how.
 std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
-                                         const std::vector<bool>& periodic);
+                                         const std::vector<bool>& periodic,
+                                         const ForEachIndex& for_each = serial_for_each);
 
 }  // namespace aspects

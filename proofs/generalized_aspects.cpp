@@ -357,7 +357,19 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // 4.3.1: neighbourhood graph over R = S ∪ U.
   std::vector<bool> periodic;
   for (const auto& v : model.vars) periodic.push_back(v.periodic);
-  out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic);
+  const ForEachIndex in_arena = [&](int n, const std::function<void(int32_t)>& body) {
+    arena.execute([&] {
+      // One index per task: the callers' indices are blocks of boxes or CSNCs (a few
+      // large CSNCs hold nearly all the witness work).
+      tbb::parallel_for(
+          tbb::blocked_range<int>(0, n, 1),
+          [&](const tbb::blocked_range<int>& r) {
+            for (int i = r.begin(); i < r.end(); ++i) body(i);
+          },
+          tbb::simple_partitioner());
+    });
+  };
+  out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic, in_arena);
 
   lap("neighbourhood graph");
   // 4.3.2: certified links between solution boxes (P3), in blocks processed in
@@ -456,21 +468,9 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   lap("components and separation");
   // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC. The
   // CSNCs are searched in parallel; the witnesses are the same for any thread count.
-  tbb::task_arena witness_arena(std::max(1, config.threads));
-  const ForEachIndex in_parallel = [&](int csncs, const std::function<void(int32_t)>& body) {
-    witness_arena.execute([&] {
-      // One CSNC per task: a few large CSNCs hold nearly all the work.
-      tbb::parallel_for(
-          tbb::blocked_range<int>(0, csncs, 1),
-          [&](const tbb::blocked_range<int>& r) {
-            for (int c = r.begin(); c < r.end(); ++c) body(c);
-          },
-          tbb::simple_partitioner());
-    });
-  };
   const WitnessSpace space(model.pose, model.command, periodic);
   const int csncs = int(out.csnc_sizes.size());
-  out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, csncs, space, 10000, in_parallel);
+  out.cuspidal = find_pose_witnesses(out.boxes, out.csnc, csncs, space, 10000, in_arena);
   lap("cuspidality");
   // ... and "one command, two poses" (assembly-mode changes), each proved in x at a point.
   struct AssemblyProver {
@@ -484,7 +484,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     return prove_command_witness(p.ev, out.boxes, config.tau, w, p.ws);
   };
   find_command_witnesses(out.boxes, out.csnc, csncs, space, prove, out.cuspidal, 1000, 100000, 2,
-                         in_parallel);
+                         in_arena);
   lap("assembly witnesses");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

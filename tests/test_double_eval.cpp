@@ -224,3 +224,15 @@ TEST(DoubleEval, HandsBackWhatItDoesNotTake) {
   EXPECT_EQ(b[0].lo_down(), 2);
   EXPECT_EQ(b[0].hi_up(), 2);
 }
+
+// The bit-level neighbours agree with std::nextafter, across zero, subnormals and ±∞.
+TEST(DoubleInterval, NeighboursAreNextafters) {
+  std::mt19937_64 g(3);
+  std::vector<double> xs = {0.0, -0.0, DBL_TRUE_MIN, -DBL_TRUE_MIN, DBL_MIN, -DBL_MIN, DBL_MAX,
+                            -DBL_MAX, INFINITY, -INFINITY, 1.0, -1.0};
+  for (int i = 0; i < 10000; ++i) xs.push_back(random_double(g, 1020));
+  for (double x : xs) {
+    EXPECT_EQ(aspects::dround::next_up(x), std::nextafter(x, INFINITY)) << x;
+    EXPECT_EQ(aspects::dround::next_down(x), std::nextafter(x, -INFINITY)) << x;
+  }
+}

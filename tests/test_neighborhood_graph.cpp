@@ -8,6 +8,7 @@
 
 #include <array>
 #include <set>
+#include <thread>
 #include <utility>
 
 #include "generalized_aspects.h"
@@ -91,3 +92,32 @@ TEST(NeighborhoodGraph, RprprEqualsFormatGraph) { expect_format_graph("rprpr.rob
 
 // Periodic commands whose images cross the seam: the case that lost pairs.
 TEST(NeighborhoodGraph, RrrrrEqualsFormatGraph) { expect_format_graph("rrrrr.robot", 0.5); }
+
+// Built in blocks run in any order, on any threads, M is the same list, sorted by (a, b).
+TEST(NeighborhoodGraph, SameListForAnyBlockOrder) {
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  AspectsConfig cfg;
+  cfg.eps = 0.2;
+  AspectsResult r = compute_aspects(m, cfg);
+  ASSERT_GT(r.boxes.size(), 3 * 2048);  // several blocks
+  std::vector<bool> periodic;
+  for (const auto& v : m.vars) periodic.push_back(v.periodic);
+  const ForEachIndex backwards_on_two_threads = [](int n, const std::function<void(int32_t)>& body) {
+    std::thread other([&] {
+      for (int i = n - 1; i >= 0; i -= 2) body(i);
+    });
+    for (int i = n - 2; i >= 0; i -= 2) body(i);
+    other.join();
+  };
+  std::vector<NeighborPair> p = neighbor_pairs(r.tree, r.boxes, periodic, backwards_on_two_threads);
+  ASSERT_EQ(p.size(), r.neighbors.size());
+  for (size_t i = 0; i < p.size(); ++i) {
+    ASSERT_EQ(p[i].a, r.neighbors[i].a);
+    ASSERT_EQ(p[i].b, r.neighbors[i].b);
+    ASSERT_EQ(p[i].shift_code, r.neighbors[i].shift_code);
+    if (i > 0) {
+      ASSERT_TRUE(p[i - 1].a < p[i].a || (p[i - 1].a == p[i].a && p[i - 1].b < p[i].b));
+    }
+  }
+}
