@@ -1,10 +1,7 @@
 #include "checkpoint.h"
 
-#include <fcntl.h>
 #include <openssl/evp.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -13,8 +10,10 @@
 #include <iterator>
 #include <memory>
 
+#include "atomic_file.h"
 #include "certificate_writer.h"
 #include "le_reader.h"
+#include "le_writer.h"
 
 namespace aspects {
 
@@ -54,44 +53,23 @@ class Sha256 {
 };
 
 // Streams to a file while hashing, so a large state is never held twice in memory.
-class Out {
+// The checkpoint's bytes, hashed as they go (the digest closes the file).
+class Out : public LeWriter {
  public:
-  explicit Out(FILE* f) : f_(f) {}
-  void bytes(const void* p, size_t n) {
+  explicit Out(AtomicFile& f) : f_(f) {}
+  void bytes(const void* p, size_t n) override {
     sha_.add(p, n);
-    ok_ = std::fwrite(p, 1, n, f_) == n && ok_;
-  }
-  void u64(uint64_t v) {
-    unsigned char b[8];
-    for (int i = 0; i < 8; ++i) b[i] = (v >> (8 * i)) & 0xffu;
-    bytes(b, 8);
-  }
-  void u32(uint32_t v) {
-    unsigned char b[4];
-    for (int i = 0; i < 4; ++i) b[i] = (v >> (8 * i)) & 0xffu;
-    bytes(b, 4);
-  }
-  void u8(uint8_t v) { bytes(&v, 1); }
-  void i32(int32_t v) { u32(uint32_t(v)); }
-  void f64(double d) {
-    uint64_t v;
-    std::memcpy(&v, &d, 8);
-    u64(v);
+    f_.write(p, n);
   }
   void str(const std::string& s) {
     u64(s.size());
     bytes(s.data(), s.size());
   }
-  bool finish() {
-    std::string d = sha_.digest();
-    ok_ = std::fwrite(d.data(), 1, d.size(), f_) == d.size() && ok_;
-    return ok_;
-  }
+  void finish() { f_.write(sha_.digest()); }
 
  private:
-  FILE* f_;
+  AtomicFile& f_;
   Sha256 sha_;
-  bool ok_ = true;
 };
 
 class In : public LeReader {
@@ -183,15 +161,6 @@ void read_part(In& in, SearchPart& part, const CheckpointHeader& h, uint32_t def
   }
 }
 
-void fsync_directory(const std::string& path) {
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  int fd = open(dir.empty() ? "." : dir.c_str(), O_RDONLY);
-  if (fd >= 0) {
-    fsync(fd);  // makes the rename durable; best effort
-    close(fd);
-  }
-}
-
 }  // namespace
 
 std::string sha256_hex(const std::string& data) {
@@ -208,66 +177,45 @@ std::string sha256_hex(const std::string& data) {
 
 void write_checkpoint(const std::string& path, const CheckpointHeader& h, const SearchState& st,
                       const std::vector<uint8_t>& done, CertificateWriter* cert) {
-  const std::string tmp = path + ".tmp." + std::to_string(getpid());
-  FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
-  bool ok = true;
-  try {
-    Out o(f);
-    o.bytes(kMagic, std::strlen(kMagic));
-    o.str(h.version);
-    o.str(h.model_sha256);
-    o.str(h.model_text);
-    o.str(h.model_file);
-    o.f64(h.eps);
-    o.f64(h.tau);
-    o.u64(uint64_t(h.precision));
-    o.str(h.bisect);
-    o.u8(h.all_links);
-    o.u8(h.no_cert);
-    o.i32(h.defer_depth);
-    o.f64(h.checkpoint_seconds);
-    o.u32(h.nv);
-    o.u32(h.p);
-    o.u8(st.top_done);
-    if (st.top_done) {
-      write_part(o, st.top, h.p);
-      o.str(cert ? cert->records(-1) : std::string());
-      o.u32(uint32_t(st.deferred.size()));
-      for (const DeferredSubtree& d : st.deferred) {
-        for (const Interval& x : d.box) {
-          o.f64(x.lo_down());
-          o.f64(x.hi_up());
-        }
-        o.i32(d.parent_split);
-        o.i32(d.node);
+  AtomicFile f(path);
+  Out o(f);
+  o.bytes(kMagic, std::strlen(kMagic));
+  o.str(h.version);
+  o.str(h.model_sha256);
+  o.str(h.model_text);
+  o.str(h.model_file);
+  o.f64(h.eps);
+  o.f64(h.tau);
+  o.u64(uint64_t(h.precision));
+  o.str(h.bisect);
+  o.u8(h.all_links);
+  o.u8(h.no_cert);
+  o.i32(h.defer_depth);
+  o.f64(h.checkpoint_seconds);
+  o.u32(h.nv);
+  o.u32(h.p);
+  o.u8(st.top_done);
+  if (st.top_done) {
+    write_part(o, st.top, h.p);
+    o.str(cert ? cert->records(-1) : std::string());
+    o.u32(uint32_t(st.deferred.size()));
+    for (const DeferredSubtree& d : st.deferred) {
+      for (const Interval& x : d.box) {
+        o.f64(x.lo_down());
+        o.f64(x.hi_up());
       }
-      for (size_t k = 0; k < st.deferred.size(); ++k) {
-        o.u8(done[k]);
-        if (!done[k]) continue;
-        write_part(o, st.parts[k], h.p);
-        o.str(cert ? cert->records(int32_t(k)) : std::string());
-      }
+      o.i32(d.parent_split);
+      o.i32(d.node);
     }
-    ok = o.finish();
-  } catch (...) {
-    std::fclose(f);
-    std::remove(tmp.c_str());
-    throw;
+    for (size_t k = 0; k < st.deferred.size(); ++k) {
+      o.u8(done[k]);
+      if (!done[k]) continue;
+      write_part(o, st.parts[k], h.p);
+      o.str(cert ? cert->records(int32_t(k)) : std::string());
+    }
   }
-  int err = ok ? 0 : (errno ? errno : EIO);  // the first failure's reason
-  auto check = [&](bool good) {
-    if (!good && !err) err = errno ? errno : EIO;
-  };
-  check(std::fflush(f) == 0 && !std::ferror(f));
-  check(fsync(fileno(f)) == 0);
-  check(std::fclose(f) == 0);
-  if (!err) check(std::rename(tmp.c_str(), path.c_str()) == 0);
-  if (err) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write checkpoint " + path + ": " + std::strerror(err));
-  }
-  fsync_directory(path);
+  o.finish();
+  f.commit();
 }
 
 Checkpoint read_checkpoint(const std::string& path) {

@@ -1,31 +1,58 @@
 #include "atomic_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace aspects {
 
-void write_file_atomically(const std::string& path, const std::string& contents) {
-  std::string tmp = path + ".tmp." + std::to_string(getpid());
-  FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error("cannot write " + tmp);
-  int err = 0;  // the first failure's errno: "File too large", "No space left on device"
-  auto check = [&](bool ok) {
-    if (!ok && !err) err = errno ? errno : EIO;
-  };
-  check(std::fwrite(contents.data(), 1, contents.size(), f) == contents.size());
-  check(std::fflush(f) == 0);
-  check(fsync(fileno(f)) == 0);
-  check(std::fclose(f) == 0);
-  if (!err) check(std::rename(tmp.c_str(), path.c_str()) == 0);
-  if (err) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + std::strerror(err));
+AtomicFile::AtomicFile(const std::string& path)
+    : path_(path), tmp_(path + ".tmp." + std::to_string(getpid())) {
+  f_ = std::fopen(tmp_.c_str(), "wb");
+  if (!f_) throw std::runtime_error("cannot write " + tmp_ + ": " + std::strerror(errno));
+}
+
+AtomicFile::~AtomicFile() {
+  if (!f_) return;  // committed
+  std::fclose(f_);
+  std::remove(tmp_.c_str());
+}
+
+void AtomicFile::note_failure() {
+  if (!err_) err_ = errno ? errno : EIO;
+}
+
+void AtomicFile::write(const void* data, size_t n) {
+  if (!err_ && std::fwrite(data, 1, n, f_) != n) note_failure();
+}
+
+void AtomicFile::commit() {
+  if (!err_ && (std::fflush(f_) != 0 || std::ferror(f_))) note_failure();
+  if (!err_ && fsync(fileno(f_)) != 0) note_failure();
+  if (std::fclose(f_) != 0) note_failure();
+  f_ = nullptr;
+  if (!err_ && std::rename(tmp_.c_str(), path_.c_str()) != 0) note_failure();
+  if (err_) {
+    std::remove(tmp_.c_str());
+    throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(err_));
   }
+  // Makes the rename durable.
+  std::string dir = std::filesystem::path(path_).parent_path().string();
+  int fd = open(dir.empty() ? "." : dir.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    fsync(fd);
+    close(fd);
+  }
+}
+
+void write_file_atomically(const std::string& path, const std::string& contents) {
+  AtomicFile f(path);
+  f.write(contents);
+  f.commit();
 }
 
 }  // namespace aspects

@@ -370,6 +370,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     });
   };
   out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic, in_arena);
+  out.neighbor_count = out.neighbors.size();
 
   lap("neighbourhood graph");
   // 4.3.2: certified links between solution boxes (P3), in blocks processed in
@@ -489,6 +490,16 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+void keep_link_pairs_only(AspectsResult& r) {
+  std::vector<NeighborPair> kept;
+  kept.reserve(r.certified_links.size());
+  for (int32_t& e : r.certified_links) {
+    kept.push_back(r.neighbors[e]);
+    e = int32_t(kept.size() - 1);
+  }
+  r.neighbors = std::move(kept);
 }
 
 }  // namespace aspects

@@ -365,7 +365,11 @@ def case_sigkill():
     seed = int(os.environ.get("LONG_RUNS_SEED", str(int(time.time()))))
     rng = random.Random(seed)
     print("seed", seed)
+    start = time.monotonic()
     ref, processed = reference()
+    # A moment inside the run, within half the reference run's duration (a fixed 0.8 s
+    # outlived the run once the engine got faster).
+    span = max(0.05, 0.5 * (time.monotonic() - start))
     for attempt in range(2):
         d = fresh("sigkill_%d" % attempt)
         p = subprocess.Popen([ASPECTS, "solve", RRRRR, "--eps", "0.7", "--threads", "2", "--out", d, "--quiet",
@@ -373,7 +377,7 @@ def case_sigkill():
         path = os.path.join(d, "checkpoint")
         while not os.path.exists(path) and p.poll() is None:
             time.sleep(0.01)
-        time.sleep(rng.uniform(0, 0.8))
+        time.sleep(rng.uniform(0, span))
         p.kill()
         p.wait()
         if p.returncode != -signal.SIGKILL:
