@@ -42,6 +42,9 @@ int main(int argc, char** argv) {
                   "prove every link between neighbouring solution boxes (default: only those "
                   "that join two components; the same CSNCs)");
   solve->add_flag("--quiet", so.quiet, "print no summary");
+  solve->add_flag("--mpfi-only", so.mpfi_only,
+                  "compute every interval operation with MPFI, also at 53 bits where doubles "
+                  "give the same ends faster (a cross-check: the same certificate)");
   solve->add_option("--bisect", so.bisect,
                     "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose "
                     "where it blocked the proof, else round robin)")

@@ -217,6 +217,7 @@ int run_solve(const SolveOptions& opts) {
     throw UsageError("--checkpoint needs --out DIR (the checkpoint is written there)");
   if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
   set_working_precision(o.prec);
+  set_double_fast_path(!o.mpfi_only);
   Model model = resumed ? resumed_model(o, resumed->header)
                 : o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
                                        : load_model(o.model_path);

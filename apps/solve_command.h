@@ -18,6 +18,7 @@ struct SolveOptions {
   bool no_cert = false;
   bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
   bool quiet = false;
+  bool mpfi_only = false;  // no double fast path at 53 bits (core/interval.h)
   std::string bisect = "round-robin";
   // Limits of a long run (issue 12); negative: none. A stopped run writes a partial
   // result and exits with kExitStopped.

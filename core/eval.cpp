@@ -24,7 +24,9 @@ bool restrict_to(Interval& out, const Interval& x, const Interval& dom) {
 
 Evaluator::Evaluator(const Dag& dag, bool doubles)
     : dag_(dag),
-      doubles_(doubles && working_precision() == 53 ? new DoubleEvaluator(dag) : nullptr),
+      doubles_(doubles && double_fast_path() && working_precision() == 53
+                   ? new DoubleEvaluator(dag)
+                   : nullptr),
       v_(dag.size()), fwd_(dag.size()), trig_arg_(dag.size()), trig_sin_(dag.size()),
       trig_cos_(dag.size()), trig_ok_(dag.size(), 0) {
   mpfi_const_pi(two_pi_.get());

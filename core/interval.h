@@ -20,6 +20,13 @@ namespace aspects {
 void set_working_precision(long bits);
 long working_precision();
 
+// At 53 bits the evaluator and the proofs' sweeps compute on doubles with MPFR's directed
+// rounding (core/double_interval.h): the same ends as MPFI, faster. On by default, for the
+// whole process; off (`aspects solve --mpfi-only`), every operation is MPFI's: a
+// cross-check that must give the same certificate.
+void set_double_fast_path(bool on);
+bool double_fast_path();
+
 class Interval {
  public:
   Interval() { mpfi_init(v_); }  // MPFI initialises to NaN; callers assign before use
