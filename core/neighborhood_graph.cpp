@@ -13,32 +13,54 @@ uint32_t pack_shift(const std::vector<int>& k) {
 
 namespace {
 
-// Hull of the output boxes below each tree node: a reported box may leave its cell
-// (the Newton iterate can shift), so the cells alone cannot guide the search.
-std::vector<double> subtree_hulls(const std::vector<SearchNode>& tree, const BoxStore& R) {
-  const int nv = R.nv();
-  // [+inf, -inf] is the empty hull: it meets nothing and is the identity of the union.
-  std::vector<double> h(tree.size() * 2 * nv);
-  for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
-  // Children have larger ids than their parent: a reverse sweep is bottom-up.
-  for (size_t i = tree.size(); i-- > 0;) {
-    const SearchNode& s = tree[i];
-    double* hi = &h[i * 2 * nv];
-    if (s.split_var < 0) {
-      if (s.leaf >= 0)
-        for (int v = 0; v < nv; ++v) hi[2 * v] = R.lo(s.leaf, v), hi[2 * v + 1] = R.hi(s.leaf, v);
-      continue;
-    }
-    for (int c : {s.left, s.right}) {
-      const double* hc = &h[size_t(c) * 2 * nv];
-      for (int v = 0; v < nv; ++v) {
-        hi[2 * v] = std::min(hi[2 * v], hc[2 * v]);
-        hi[2 * v + 1] = std::max(hi[2 * v + 1], hc[2 * v + 1]);
+// Hull of the output boxes below each internal tree node: a reported box may leave its cell
+// (the Newton iterate can shift), so the cells alone cannot guide the search. A filter
+// only, so in floats rounded outward, and none for leaves (their box is in R): on 3-RPR at
+// eps 0.3 the tree has 19 M nodes, and hulls in doubles for all of them took 1.8 GB.
+struct Hulls {
+  std::vector<int32_t> slot;  // per node: its hull's index, -1 for a leaf
+  std::vector<float> h;       // per internal node, lo and hi per variable
+
+  static float down(double x) {
+    float f = float(x);
+    return f > x ? std::nextafter(f, -INFINITY) : f;
+  }
+  static float up(double x) {
+    float f = float(x);
+    return f < x ? std::nextafter(f, INFINITY) : f;
+  }
+
+  Hulls(const std::vector<SearchNode>& tree, const BoxStore& R) : slot(tree.size(), -1) {
+    const int nv = R.nv();
+    int32_t internal = 0;
+    for (size_t i = 0; i < tree.size(); ++i)
+      if (tree[i].split_var >= 0) slot[i] = internal++;
+    // [+inf, -inf] is the empty hull: it meets nothing and is the identity of the union.
+    h.resize(size_t(internal) * 2 * nv);
+    for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
+    // Children have larger ids than their parent: a reverse sweep is bottom-up.
+    for (size_t i = tree.size(); i-- > 0;) {
+      const SearchNode& s = tree[i];
+      if (s.split_var < 0) continue;
+      float* hull = &h[size_t(slot[i]) * 2 * nv];
+      for (int c : {s.left, s.right}) {
+        const SearchNode& child = tree[c];
+        for (int v = 0; v < nv; ++v) {
+          float clo = INFINITY, chi = -INFINITY;
+          if (child.split_var >= 0) {
+            clo = h[(size_t(slot[c]) * nv + v) * 2];
+            chi = h[(size_t(slot[c]) * nv + v) * 2 + 1];
+          } else if (child.leaf >= 0) {
+            clo = down(R.lo(child.leaf, v));
+            chi = up(R.hi(child.leaf, v));
+          }
+          hull[2 * v] = std::min(hull[2 * v], clo);
+          hull[2 * v + 1] = std::max(hull[2 * v + 1], chi);
+        }
       }
     }
   }
-  return h;
-}
+};
 
 // The certificate's definition of M (certificates/FORMAT.md, "claim lower-bound"): a and b
 // are neighbours when, for every v, a_v meets b_v + 2πk_v with the shifted ends of b
@@ -63,7 +85,7 @@ bool meets_shifted(const BoxStore& R, int a, int b, const std::vector<int>& k,
 struct Query {
   const std::vector<SearchNode>& tree;
   const BoxStore& R;
-  const std::vector<double>& hull;
+  const Hulls& hulls;
   std::vector<double> lo, hi;  // query box (shifted, widened): a filter only
   int self;
   std::vector<int> back;       // the shift of b, −k
@@ -74,15 +96,17 @@ struct Query {
   void visit(int32_t node) {
     const SearchNode& s = tree[node];
     const int nv = R.nv();
-    const double* h = &hull[size_t(node) * 2 * nv];
-    for (int v = 0; v < nv; ++v)
-      if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
     if (s.split_var < 0) {
       if (s.leaf < 0 || s.leaf <= self) return;
+      for (int v = 0; v < nv; ++v)
+        if (lo[v] > R.hi(s.leaf, v) || R.lo(s.leaf, v) > hi[v]) return;
       if (meets_shifted(R, self, s.leaf, back, two_pi, t))
         out->push_back({self, s.leaf, pack_shift(back)});
       return;
     }
+    const float* h = &hulls.h[size_t(hulls.slot[node]) * 2 * nv];
+    for (int v = 0; v < nv; ++v)
+      if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
     visit(s.left);
     visit(s.right);
   }
@@ -99,21 +123,25 @@ std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, co
     if (periodic[v]) pvars.push_back(v);
   int combos = 1;
   for (size_t i = 0; i < pvars.size(); ++i) combos *= 3;
-  const std::vector<double> hull = subtree_hulls(tree, R);
+  const Hulls hulls(tree, R);
   Interval two_pi_shared;
   mpfi_const_pi(two_pi_shared.get());
   mpfi_mul_ui(two_pi_shared.get(), two_pi_shared.get(), 2);
 
   // Blocks of consecutive boxes a, each with its own output: sorted within the block,
-  // they concatenate in (a, b) order.
-  const int block = 2048, blocks = (R.size() + block - 1) / block;
+  // they concatenate in (a, b) order. At most about 64 blocks: a large block's pairs are
+  // memory of their own (glibc maps allocations above 32 MB), returned to the system as
+  // soon as they are copied, so the copy does not double the peak (2.6 GB of pairs on
+  // 3-RPR at eps 0.3).
+  const int block = std::max(2048, R.size() / 64 + 1);
+  const int blocks = (R.size() + block - 1) / block;
   std::vector<std::vector<NeighborPair>> found(blocks);
   for_each(blocks, [&](int32_t blk) {
     // Per block, copies at the shared value's precision (a worker thread's default
     // precision may differ, and M must not depend on the thread).
     Interval two_pi = two_pi_shared, t = two_pi_shared;
     std::vector<NeighborPair>& out = found[blk];
-    Query q{tree, R, hull, std::vector<double>(nv), std::vector<double>(nv), 0,
+    Query q{tree, R, hulls, std::vector<double>(nv), std::vector<double>(nv), 0,
             std::vector<int>(nv, 0), two_pi, two_pi_shared, &out};
     std::vector<int> k(nv, 0);
     const int end = std::min(R.size(), (blk + 1) * block);
