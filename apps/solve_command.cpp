@@ -34,9 +34,12 @@ double resident_mib() { return resident_bytes() / (1024.0 * 1024.0); }
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 // Memory still needed per output box after the search stops, for the merge, the
 // neighbourhood graph, the links and the outputs: the peak minus the resident memory at the
-// stop was about 600 bytes per output box on RRRRR (eps 0.05 and 0.1, two threads); 2 KiB
-// leaves room for a model with more variables (tests/long_runs.py, case memory_limit).
-constexpr double kReservePerBox = 2048;
+// stop was about 600 bytes per output box on RRRRR (eps 0.05 and 0.1, two threads) and
+// 505 on 3-RPR at eps 0.3 (9.4 M boxes: 2.0 GB at the stop, 6.8 GB at the peak, after the
+// graph's and the outputs' memory was cut); 1 KiB leaves room for a model with more
+// variables (tests/long_runs.py, case memory_limit). It was 2 KiB, which stopped 3-RPR at
+// eps 0.3 under a 20 GiB limit with 6.8 GB used.
+constexpr double kReservePerBox = 1024;
 
 void validate(const SolveOptions& o) {
   if (!(o.eps > 0) || !std::isfinite(o.eps))
