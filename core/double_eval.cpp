@@ -6,8 +6,6 @@ namespace aspects {
 
 namespace {
 
-DInterval to_d(const Interval& x) { return {x.lo_down(), x.hi_up()}; }
-
 DInterval abs_of(const DInterval& a) {
   if (a.lo >= 0) return a;
   if (a.hi <= 0) return neg(a);
@@ -32,12 +30,12 @@ DoubleEvaluator::DoubleEvaluator(const Dag& dag)
       trig_arg_(dag.size()), trig_sin_(dag.size()), trig_cos_(dag.size()),
       trig_ok_(dag.size(), 0) {
   for (int id = 0; id < dag.size(); ++id)
-    if (dag.node(id).op == Op::Const) consts_[id] = to_d(dag.constant_value(id));
+    if (dag.node(id).op == Op::Const) consts_[id] = to_dinterval(dag.constant_value(id));
   Interval pi;
   mpfi_const_pi(pi.get());
-  pi_ = to_d(pi);
+  pi_ = to_dinterval(pi);
   mpfi_mul_2ui(pi.get(), pi.get(), 1);
-  two_pi_ = to_d(pi);
+  two_pi_ = to_dinterval(pi);
 }
 
 void DoubleEvaluator::sin_cos_of(int arg_id, const DInterval& arg) {
@@ -47,8 +45,8 @@ void DoubleEvaluator::sin_cos_of(int arg_id, const DInterval& arg) {
     mpfi_arg_.set_hull(arg.lo, arg.hi);
     mpfi_sin(mpfi_sin_.get(), mpfi_arg_.get());
     mpfi_cos(mpfi_cos_.get(), mpfi_arg_.get());
-    trig_sin_[arg_id] = to_d(mpfi_sin_);
-    trig_cos_[arg_id] = to_d(mpfi_cos_);
+    trig_sin_[arg_id] = to_dinterval(mpfi_sin_);
+    trig_cos_[arg_id] = to_dinterval(mpfi_cos_);
   }
   trig_arg_[arg_id] = arg;
   trig_ok_[arg_id] = 1;
@@ -79,7 +77,7 @@ std::optional<EvalStatus> DoubleEvaluator::forward(const std::vector<int>& progr
     switch (n.op) {
       case Op::Const: r = consts_[id]; break;
       case Op::Var:
-        r = to_d(box[n.k]);
+        r = to_dinterval(box[n.k]);
         if (is_empty(r)) return std::nullopt;
         box_[n.k] = r;
         break;

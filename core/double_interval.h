@@ -139,26 +139,30 @@ inline DInterval sub(const DInterval& a, const DInterval& b) {
 }
 inline DInterval neg(const DInterval& a) { return {-a.hi, -a.lo}; }
 
-// Rounding is monotone, so the least rounded-down product of the ends is the rounded-down
-// least product: the same ends as MPFI's case analysis.
+// The hull of x ∘ y over the four pairs of ends, each rounded down by `down` and up by `up`.
+// Rounding is monotone, so the least rounded-down value is the rounded-down least value:
+// for × and / (monotone in each argument on the boxes given) the same ends as MPFI's case
+// analysis.
+template <class Down, class Up>
+inline DInterval over_ends(const DInterval& a, const DInterval& b, Down down, Up up) {
+  return {std::min(std::min(down(a.lo, b.lo), down(a.lo, b.hi)),
+                   std::min(down(a.hi, b.lo), down(a.hi, b.hi))),
+          std::max(std::max(up(a.lo, b.lo), up(a.lo, b.hi)),
+                   std::max(up(a.hi, b.lo), up(a.hi, b.hi)))};
+}
+
 inline DInterval mul(const DInterval& a, const DInterval& b) {
   using namespace dround;
   if (a.lo >= 0 && b.lo >= 0) return {mul_down(a.lo, b.lo), mul_up(a.hi, b.hi)};
-  double lo = std::min(std::min(mul_down(a.lo, b.lo), mul_down(a.lo, b.hi)),
-                       std::min(mul_down(a.hi, b.lo), mul_down(a.hi, b.hi)));
-  double hi = std::max(std::max(mul_up(a.lo, b.lo), mul_up(a.lo, b.hi)),
-                       std::max(mul_up(a.hi, b.lo), mul_up(a.hi, b.hi)));
-  return {lo, hi};
+  return over_ends(a, b, [](double x, double y) { return mul_down(x, y); },
+                   [](double x, double y) { return mul_up(x, y); });
 }
 
 // 0 ∉ b.
 inline DInterval div(const DInterval& a, const DInterval& b) {
   using namespace dround;
-  double lo = std::min(std::min(div_down(a.lo, b.lo), div_down(a.lo, b.hi)),
-                       std::min(div_down(a.hi, b.lo), div_down(a.hi, b.hi)));
-  double hi = std::max(std::max(div_up(a.lo, b.lo), div_up(a.lo, b.hi)),
-                       std::max(div_up(a.hi, b.lo), div_up(a.hi, b.hi)));
-  return {lo, hi};
+  return over_ends(a, b, [](double x, double y) { return div_down(x, y); },
+                   [](double x, double y) { return div_up(x, y); });
 }
 
 inline DInterval sqr(const DInterval& a) {

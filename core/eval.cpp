@@ -22,9 +22,9 @@ bool restrict_to(Interval& out, const Interval& x, const Interval& dom) {
 
 }  // namespace
 
-Evaluator::Evaluator(const Dag& dag, bool doubles)
+Evaluator::Evaluator(const Dag& dag)
     : dag_(dag),
-      doubles_(doubles && double_fast_path() && working_precision() == 53
+      doubles_(double_fast_path() && working_precision() == 53
                    ? new DoubleEvaluator(dag)
                    : nullptr),
       v_(dag.size()), fwd_(dag.size()), trig_arg_(dag.size()), trig_sin_(dag.size()),
@@ -78,7 +78,7 @@ const Interval& Evaluator::value(int id) const {
 
 DInterval Evaluator::value_d(int id) const {
   if (from_doubles_) return doubles_->value(id);
-  return {v_[id].lo_down(), v_[id].hi_up()};
+  return to_dinterval(v_[id]);
 }
 
 EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
@@ -218,7 +218,7 @@ bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Inte
                            Box& box) {
   if (doubles_) {
     if (std::optional<bool> feasible =
-            doubles_->hc4_revise(program, root, {target.lo_down(), target.hi_up()}, box)) {
+            doubles_->hc4_revise(program, root, to_dinterval(target), box)) {
       from_doubles_ = true;
       return *feasible;
     }

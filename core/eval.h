@@ -18,10 +18,9 @@ namespace aspects {
 
 class Evaluator {
  public:
-  // doubles: use the double-endpoint fast path (core/double_eval.h) where it applies, at
-  // a working precision of 53 bits and unless set_double_fast_path(false). Off, every
-  // value comes from MPFI (for tests).
-  explicit Evaluator(const Dag& dag, bool doubles = true);
+  // With the double-endpoint fast path (core/double_eval.h) where it applies, when created
+  // at a working precision of 53 bits and unless set_double_fast_path(false).
+  explicit Evaluator(const Dag& dag);
 
   // Evaluates the nodes of `program` (a Dag::closure, increasing ids) on the box.
   EvalStatus forward(const std::vector<int>& program, const Box& box);

@@ -89,6 +89,9 @@ class Interval {
   mpfi_t v_;
 };
 
+// The ends as doubles, rounded outward: a superset, exactly the interval at 53 bits.
+inline DInterval to_dinterval(const Interval& x) { return {x.lo_down(), x.hi_up()}; }
+
 // Sign of an interval known to exclude zero: +1, -1, or 0 when it may vanish.
 inline int certain_sign(const Interval& a) {
   return a.certainly_pos() ? 1 : a.certainly_neg() ? -1 : 0;

@@ -1,5 +1,5 @@
 // The few interval operations the proofs' linear algebra needs (proofs/preconditioner.*,
-// proofs/hansen_sengupta.cpp, proofs/strong_regularity.cpp), in one overload set for MPFI
+// proofs/hansen_sengupta.cpp), in one overload set for MPFI
 // intervals and for double-ended ones, so that each algorithm is written once and runs
 // on doubles at 53 bits, where both give the same ends (core/double_interval.h).
 // Three-address style, as MPFI: the result is the first argument.
@@ -12,7 +12,7 @@ namespace aspects {
 namespace iops {
 
 inline void assign(Interval& r, const Interval& x) { mpfi_set(r.get(), x.get()); }
-inline void assign(DInterval& r, const Interval& x) { r = {x.lo_down(), x.hi_up()}; }
+inline void assign(DInterval& r, const Interval& x) { r = to_dinterval(x); }
 inline void store(Interval& r, const Interval& x) { mpfi_set(r.get(), x.get()); }
 inline void store(Interval& r, const DInterval& x) { r.set_hull(x.lo, x.hi); }  // exact
 inline void set_zero(Interval& r) { mpfi_set_si(r.get(), 0); }

@@ -73,7 +73,7 @@ HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<I
 
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
                          std::vector<Interval>& image, HsWorkspace& ws, bool in_pose) {
-  ws.in_doubles = ws.doubles_allowed && double_fast_path() && working_precision() == 53;
+  ws.in_doubles = double_fast_path() && working_precision() == 53;
   if (ws.in_doubles) return sweep(ev, box, intersect, image, ws, ws.doubles, in_pose);
   return sweep(ev, box, intersect, image, ws, ws.mpfi, in_pose);
 }

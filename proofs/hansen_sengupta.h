@@ -35,7 +35,6 @@ struct HsWorkspace {
   HsArrays<Interval> mpfi;
   HsArrays<DInterval> doubles;
   bool in_doubles = false;  // the arrays the last sweep filled
-  bool doubles_allowed = true;  // false: MPFI at 53 bits too (tests compare the two)
   std::vector<double> C;
   Box mid_box;
 };

@@ -5,6 +5,7 @@
 
 #include <cfloat>
 #include <fstream>
+#include <memory>
 #include <random>
 #include <sstream>
 
@@ -124,6 +125,14 @@ std::string read(const std::string& path) {
 
 class DoubleEvalRobot : public ::testing::TestWithParam<const char*> {};
 
+// An evaluator without the double fast path (the switch is read when it is created).
+std::unique_ptr<aspects::Evaluator> mpfi_evaluator(const aspects::Dag& dag) {
+  aspects::set_double_fast_path(false);
+  auto ev = std::make_unique<aspects::Evaluator>(dag);
+  aspects::set_double_fast_path(true);
+  return ev;
+}
+
 }  // namespace
 
 // Every node of the equations and both Jacobians, and every HC4-Revise, as MPFI gives them.
@@ -136,7 +145,8 @@ TEST_P(DoubleEvalRobot, SameValuesAndContractionsAsMpfi) {
   roots.insert(roots.end(), m.fq.begin(), m.fq.end());
   const std::vector<int> program = m.dag.closure(roots);
   aspects::DoubleEvaluator fast(m.dag);
-  aspects::Evaluator slow(m.dag, /*doubles=*/false);
+  std::unique_ptr<aspects::Evaluator> mpfi = mpfi_evaluator(m.dag);
+  aspects::Evaluator& slow = *mpfi;
   const aspects::Box dom = m.initial_box();
   const int nv = int(dom.size());
   std::mt19937_64 g(2026);
@@ -199,7 +209,9 @@ TEST(DoubleEval, HandsBackWhatItDoesNotTake) {
   const int cube = dag.pow(x, 3);
   const int cube_minus = dag.binary(aspects::Op::Sub, cube, dag.constant(8.0));
   aspects::DoubleEvaluator fast(dag);
-  aspects::Evaluator with(dag), without(dag, false);
+  aspects::Evaluator with(dag);
+  std::unique_ptr<aspects::Evaluator> mpfi = mpfi_evaluator(dag);
+  aspects::Evaluator& without = *mpfi;
   const aspects::Box pos{Interval(1, 4)}, straddle{Interval(-1, 4)};
   struct Case {
     int node;
