@@ -121,27 +121,26 @@ bool apart(const BoxStore& R, int a, int b, const std::vector<int>& vars, const 
   return false;
 }
 
-// The non-periodic variable of `vars` (other than `exclude`) on which the boxes overlap least
-// (the sum of their widths over the span they cover); -1 when there is none.
-int least_overlap(const BoxStore& R, const std::vector<int32_t>& members, const WitnessSpace& s,
-                  const std::vector<int>& vars, int exclude) {
-  int best = -1;
-  double least = INFINITY;
+// The non-periodic variables of `vars`, those on which the boxes overlap least (the sum of
+// their widths over the span they cover) first; ties in the order of `vars`.
+std::vector<int> by_overlap(const BoxStore& R, const std::vector<int32_t>& members,
+                            const WitnessSpace& s, const std::vector<int>& vars) {
+  std::vector<std::pair<double, int>> depth;
   for (int v : vars) {
-    if (s.periodic[v] || v == exclude) continue;
+    if (s.periodic[v]) continue;
     double widths = 0, lo = INFINITY, hi = -INFINITY;
     for (int32_t b : members) {
       widths += R.hi(b, v) - R.lo(b, v);
       lo = std::min(lo, R.lo(b, v));
       hi = std::max(hi, R.hi(b, v));
     }
-    const double depth = widths / std::max(hi - lo, 1e-300);
-    if (depth < least) {
-      least = depth;
-      best = v;
-    }
+    depth.push_back({widths / std::max(hi - lo, 1e-300), v});
   }
-  return best;
+  std::stable_sort(depth.begin(), depth.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<int> order;
+  for (const auto& d : depth) order.push_back(d.second);
+  return order;
 }
 
 // The pairs (i, j), i < j, of sweep entries (sorted by lo on the sweep coordinate, no
@@ -199,8 +198,8 @@ WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members,
   // The sweep coordinate: a non-periodic one when there is one, the one where the boxes
   // overlap least: the pairs the sweep visits are those that meet on it (on 3-RPR at eps
   // 0.3 the first pose coordinate gave a 132 s search for no witness).
-  const int least = least_overlap(R, members, s, meet_vars, -1);
-  const int v0 = least >= 0 ? least : meet_vars[0];
+  const std::vector<int> order = by_overlap(R, members, s, meet_vars);
+  const int v0 = order.empty() ? meet_vars[0] : order[0];
   std::vector<Entry> e;
   const int copies = s.periodic[v0] ? 1 : 0;
   for (int32_t b : members)
@@ -254,8 +253,7 @@ WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members,
   // With a second non-periodic coordinate, the candidates come from strips of it (the same
   // list, far fewer pairs visited: 132 s for 3-RPR at eps 0.3 with one coordinate), and are
   // offered in sweep order. Not under a budget of offers, which a full listing would exceed.
-  const int v1 = offers == INT64_MAX && copies == 0 ? least_overlap(R, members, s, meet_vars, v0)
-                                                    : -1;
+  const int v1 = offers == INT64_MAX && copies == 0 && order.size() > 1 ? order[1] : -1;
   if (v1 >= 0) {
     for (const auto& [i, j] : candidates_by_strips(R, v1, e, candidate))
       if (offer(size_t(i), size_t(j))) return WitnessSearch::Capped;
