@@ -114,9 +114,10 @@ struct Query {
 
 }  // namespace
 
-std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
-                                         const std::vector<bool>& periodic,
-                                         const ForEachIndex& for_each) {
+void stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
+                           const std::vector<bool>& periodic,
+                           const std::function<void(const std::vector<NeighborPair>&)>& consume,
+                           const ForEachIndex& for_each) {
   const int nv = R.nv();
   std::vector<int> pvars;
   for (int v = 0; v < nv; ++v)
@@ -129,18 +130,15 @@ std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, co
   mpfi_mul_ui(two_pi_shared.get(), two_pi_shared.get(), 2);
 
   // Blocks of consecutive boxes a, each with its own output: sorted within the block,
-  // they concatenate in (a, b) order. At most about 64 blocks: a large block's pairs are
-  // memory of their own (glibc maps allocations above 32 MB), returned to the system as
-  // soon as they are copied, so the copy does not double the peak (2.6 GB of pairs on
-  // 3-RPR at eps 0.3).
-  const int block = std::max(2048, R.size() / 64 + 1);
-  const int blocks = (R.size() + block - 1) / block;
-  std::vector<std::vector<NeighborPair>> found(blocks);
-  for_each(blocks, [&](int32_t blk) {
+  // they follow each other in (a, b) order. A round holds 1/32 of the boxes, so that its
+  // pairs stay a small part of M.
+  const int block = std::max(2048, R.size() / 512 + 1);
+  const int blocks = (R.size() + block - 1) / block, round = 16;
+  std::vector<std::vector<NeighborPair>> found(round);
+  auto query_block = [&](int32_t blk, std::vector<NeighborPair>& out) {
     // Per block, copies at the shared value's precision (a worker thread's default
     // precision may differ, and M must not depend on the thread).
     Interval two_pi = two_pi_shared, t = two_pi_shared;
-    std::vector<NeighborPair>& out = found[blk];
     Query q{tree, R, hulls, std::vector<double>(nv), std::vector<double>(nv), 0,
             std::vector<int>(nv, 0), two_pi, two_pi_shared, &out};
     std::vector<int> k(nv, 0);
@@ -185,16 +183,27 @@ std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, co
                             return x.a == y.a && x.b == y.b;
                           }),
               out.end());
-    out.shrink_to_fit();
-  });
-  size_t total = 0;
-  for (const auto& f : found) total += f.size();
-  std::vector<NeighborPair> pairs;
-  pairs.reserve(total);
-  for (auto& f : found) {
-    pairs.insert(pairs.end(), f.begin(), f.end());
-    std::vector<NeighborPair>().swap(f);  // freed as it goes: the peak stays near one copy
+  };
+  for (int first = 0; first < blocks; first += round) {
+    const int n = std::min(round, blocks - first);
+    for_each(n, [&](int32_t i) { query_block(first + i, found[i]); });
+    for (int i = 0; i < n; ++i) {
+      consume(found[i]);
+      found[i].clear();
+    }
   }
+}
+
+std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
+                                         const std::vector<bool>& periodic,
+                                         const ForEachIndex& for_each) {
+  std::vector<NeighborPair> pairs;
+  stream_neighbor_pairs(
+      tree, R, periodic,
+      [&](const std::vector<NeighborPair>& piece) {
+        pairs.insert(pairs.end(), piece.begin(), piece.end());
+      },
+      for_each);
   return pairs;
 }
 

@@ -369,8 +369,18 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
           tbb::simple_partitioner());
     });
   };
-  out.neighbors = neighbor_pairs(out.tree, out.boxes, periodic, in_arena);
-  out.neighbor_count = out.neighbors.size();
+  // M streams through the separation's union–find; only its pairs between solution boxes,
+  // the candidates for links, are kept.
+  SignSeparation separation(out.boxes.size(), int(out.factors.size()), out.signs);
+  stream_neighbor_pairs(
+      out.tree, out.boxes, periodic,
+      [&](const std::vector<NeighborPair>& piece) {
+        out.neighbor_count += piece.size();
+        separation.add(piece, in_arena);
+        for (const NeighborPair& pr : piece)
+          if (out.certified[pr.a] && out.certified[pr.b]) out.neighbors.push_back(pr);
+      },
+      in_arena);
 
   lap("neighbourhood graph");
   // 4.3.2: certified links between solution boxes (P3), in blocks processed in
@@ -415,7 +425,6 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
         size_t end = std::min(out.neighbors.size(), (k + 1) * block);
         for (size_t e = k * block; e < end; ++e) {
           const auto& pr = out.neighbors[e];
-          if (!out.certified[pr.a] || !out.certified[pr.b]) continue;
           int32_t ra = 0, rb = 0;
           if (!config.all_links) {
             ra = local_root(joined_root(pr.a));
@@ -464,8 +473,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   out.filtered = filter_components(out.csnc_sizes);
 
   // 4.4.2: separation by factor signs; the certified lower bound (11).
-  out.separation = separate_by_signs(out.boxes.size(), int(out.factors.size()), out.signs,
-                                     out.certified, out.neighbors, &out.csnc);
+  out.separation = separation.result(out.certified, &out.csnc);
   lap("components and separation");
   // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC. The
   // CSNCs are searched in parallel; the witnesses are the same for any thread count.

@@ -67,7 +67,7 @@ void expect_format_graph(const std::string& file, double eps) {
       if (all) want.insert({a, b});
     }
   std::set<std::pair<int, int>> got;
-  for (const NeighborPair& e : r.neighbors) {
+  for (const NeighborPair& e : neighbor_pairs(r.tree, R, periodic)) {
     ASSERT_LT(e.a, e.b);
     EXPECT_TRUE(got.insert({e.a, e.b}).second) << "pair listed twice: " << e.a << " " << e.b;
     for (int v = 0; v < nv; ++v) {
@@ -111,13 +111,46 @@ TEST(NeighborhoodGraph, SameListForAnyBlockOrder) {
     other.join();
   };
   std::vector<NeighborPair> p = neighbor_pairs(r.tree, r.boxes, periodic, backwards_on_two_threads);
-  ASSERT_EQ(p.size(), r.neighbors.size());
+  std::vector<NeighborPair> serial = neighbor_pairs(r.tree, r.boxes, periodic);
+  ASSERT_EQ(p.size(), serial.size());
+  ASSERT_EQ(p.size(), r.neighbor_count);
   for (size_t i = 0; i < p.size(); ++i) {
-    ASSERT_EQ(p[i].a, r.neighbors[i].a);
-    ASSERT_EQ(p[i].b, r.neighbors[i].b);
-    ASSERT_EQ(p[i].shift_code, r.neighbors[i].shift_code);
+    ASSERT_EQ(p[i].a, serial[i].a);
+    ASSERT_EQ(p[i].b, serial[i].b);
+    ASSERT_EQ(p[i].shift_code, serial[i].shift_code);
     if (i > 0) {
       ASSERT_TRUE(p[i - 1].a < p[i].a || (p[i - 1].a == p[i].a && p[i - 1].b < p[i].b));
     }
   }
+}
+
+// The solver never holds M: it streams it through the separation and keeps the pairs
+// between solution boxes. Those must be M's, in M's order, and the bound and the
+// representatives must be those of the separation run on the whole of M.
+TEST(NeighborhoodGraph, StreamedMGivesTheWholeMsResults) {
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  AspectsConfig cfg;
+  cfg.eps = 0.2;
+  AspectsResult r = compute_aspects(m, cfg);
+  std::vector<bool> periodic;
+  for (const auto& v : m.vars) periodic.push_back(v.periodic);
+  std::vector<NeighborPair> M = neighbor_pairs(r.tree, r.boxes, periodic);
+  std::vector<NeighborPair> sol;
+  for (const NeighborPair& e : M)
+    if (r.certified[e.a] && r.certified[e.b]) sol.push_back(e);
+  ASSERT_GT(sol.size(), 1000u);
+  ASSERT_LT(sol.size(), M.size());
+  ASSERT_EQ(sol.size(), r.neighbors.size());
+  for (size_t i = 0; i < sol.size(); ++i) {
+    ASSERT_EQ(sol[i].a, r.neighbors[i].a);
+    ASSERT_EQ(sol[i].b, r.neighbors[i].b);
+    ASSERT_EQ(sol[i].shift_code, r.neighbors[i].shift_code);
+  }
+  SeparationResult whole = separate_by_signs(r.boxes.size(), int(r.factors.size()), r.signs,
+                                             r.certified, M, &r.csnc);
+  EXPECT_EQ(whole.lower_bound, 10);
+  EXPECT_EQ(r.separation.lower_bound, whole.lower_bound);
+  EXPECT_EQ(r.separation.per_class, whole.per_class);
+  EXPECT_EQ(r.separation.representatives, whole.representatives);
 }

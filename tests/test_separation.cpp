@@ -64,7 +64,12 @@ void leaf(BoxSet& s, int32_t node, const Box& cell, bool certified, std::vector<
 
 int bound(const BoxSet& s, int p) {
   auto M = neighbor_pairs(s.tree, s.boxes, s.periodic);
-  return separate_by_signs(s.boxes.size(), p, s.signs, s.certified, M).lower_bound;
+  int whole = separate_by_signs(s.boxes.size(), p, s.signs, s.certified, M).lower_bound;
+  // The solver feeds M in pieces: fed one pair at a time, last first, the bound is the same.
+  SignSeparation pieces(s.boxes.size(), p, s.signs);
+  for (size_t i = M.size(); i-- > 0;) pieces.add({M[i]});
+  EXPECT_EQ(pieces.result(s.certified).lower_bound, whole);
+  return whole;
 }
 
 // Closed intervals [alo, ahi] and [blo, bhi] + 2πk meet (exactly, at 256 bits).
