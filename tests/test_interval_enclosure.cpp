@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -451,6 +452,46 @@ TEST(IntervalBasics, DirectedConversionsToDouble) {
       mpfr_clear(w);
     }
   }
+  set_working_precision(53);
+}
+
+// lo_down/hi_up read numbers of at most 53 bits straight off the limb. Against MPFR's own
+// directed conversion on random ends of every exponent a double has and beyond (subnormal,
+// overflowing), zeros of both signs, infinities, and precisions on both sides of 53.
+// Seen failing with the exponent off by one and with the sign bit dropped.
+TEST(IntervalBasics, EndsReadOffTheLimbEqualMpfrGetD) {
+  std::mt19937_64 g(53);
+  int fast = 0;
+  for (long prec : {2L, 24L, 52L, 53L, 54L, 64L, 113L}) {
+    set_working_precision(prec);
+    for (int trial = 0; trial < 20000; ++trial) {
+      Interval v;
+      mpfr_t a, b;
+      mpfr_inits2(prec, a, b, (mpfr_ptr)nullptr);
+      double x = std::ldexp(double(g() >> 11) / 9007199254740992.0 + 0.5, int(g() % 2200) - 1100);
+      double y = x * (1 + double(g() % 1000) / 1e4);
+      if (g() % 2) x = -x;
+      mpfr_set_d(a, std::min(x, y), MPFR_RNDD);
+      mpfr_set_d(b, std::max(x, y), MPFR_RNDU);
+      switch (trial % 50) {
+        case 0: mpfr_set_zero(a, -1); break;
+        case 1: mpfr_set_zero(b, -1); mpfr_set_zero(a, 1); break;
+        case 2: mpfr_set_inf(a, -1); break;
+        case 3: mpfr_set_inf(b, 1); break;
+        case 4: mpfr_set_ui_2exp(b, 1, 1024, MPFR_RNDU); break;   // just beyond DBL_MAX
+        case 5: mpfr_set_si_2exp(a, -1, -1022, MPFR_RNDD); break; // smallest normal
+      }
+      mpfi_interv_fr(v.get(), a, b);
+      fast += std::isnormal(v.lo_down());
+      double lo = mpfr_get_d(&v.get()->left, MPFR_RNDD) + 0.0;
+      double hi = mpfr_get_d(&v.get()->right, MPFR_RNDU) + 0.0;
+      double l = v.lo_down(), h = v.hi_up();
+      ASSERT_EQ(std::memcmp(&lo, &l, 8), 0) << prec << " " << lo << " " << l;  // sign of 0 too
+      ASSERT_EQ(std::memcmp(&hi, &h, 8), 0) << prec << " " << hi << " " << h;
+      mpfr_clears(a, b, (mpfr_ptr)nullptr);
+    }
+  }
+  EXPECT_GT(fast, 50000);
   set_working_precision(53);
 }
 
