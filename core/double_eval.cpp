@@ -41,7 +41,7 @@ DoubleEvaluator::DoubleEvaluator(const Dag& dag)
 void DoubleEvaluator::sin_cos_of(int arg_id, const DInterval& arg) {
   if (trig_ok_[arg_id] && same(trig_arg_[arg_id], arg)) return;
   if (!sincos_.enclose_doubles(arg.lo, arg.hi, trig_sin_[arg_id], trig_cos_[arg_id])) {
-    // A multiple of π/2 may lie in the argument: MPFI's own sin and cos (rare).
+    // An end may be a multiple of π/2: MPFI's own sin and cos (rare).
     mpfi_arg_.set_hull(arg.lo, arg.hi);
     mpfi_sin(mpfi_sin_.get(), mpfi_arg_.get());
     mpfi_cos(mpfi_cos_.get(), mpfi_arg_.get());

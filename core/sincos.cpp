@@ -56,17 +56,36 @@ void SinCos::enclose(const Interval& a, Interval& s, Interval& c) {
 }
 
 bool SinCos::enclose_doubles(double lo, double hi, DInterval& s, DInterval& c) {
-  long j = 0;
-  if (!doubles_ || !inside_one_quadrant(lo, hi, j)) return false;
-  bool sin_up, cos_up;
-  monotony(j, sin_up, cos_up);
+  long j = 0, j_hi = 0;
+  if (!doubles_ || !inside_one_quadrant(lo, lo, j) || !inside_one_quadrant(hi, hi, j_hi))
+    return false;
   double sl[2], sh[2], cl[2], ch[2];  // bounds at the lower [0] and upper [1] end
   arb_sin_cos(lo, sl[0], sh[0], cl[0], ch[0]);
   const int u = lo == hi ? 0 : 1;  // a point: both ends are one
   if (u == 1) arb_sin_cos(hi, sl[1], sh[1], cl[1], ch[1]);
-  // Monotone on the quadrant: the minimum is at one end, the maximum at the other.
-  s = {std::max(-1.0, sl[sin_up ? 0 : u]), std::min(1.0, sh[sin_up ? u : 0])};
-  c = {std::max(-1.0, cl[cos_up ? 0 : u]), std::min(1.0, ch[cos_up ? u : 0])};
+  if (j == j_hi) {
+    // Monotone on the quadrant: the minimum is at one end, the maximum at the other.
+    bool sin_up, cos_up;
+    monotony(j, sin_up, cos_up);
+    s = {std::max(-1.0, sl[sin_up ? 0 : u]), std::min(1.0, sh[sin_up ? u : 0])};
+    c = {std::max(-1.0, cl[cos_up ? 0 : u]), std::min(1.0, ch[cos_up ? u : 0])};
+    return true;
+  }
+  // Ends in different quadrants (MPFI's mpfi_sin and mpfi_cos took 12 % of a search
+  // here): over [lo, hi] each function ranges over its values at the ends and at its
+  // critical points inside, the multiples kπ/2 for k = j+1 .. j_hi, where it is ±1.
+  s = {std::min(sl[0], sl[1]), std::max(sh[0], sh[1])};
+  c = {std::min(cl[0], cl[1]), std::max(ch[0], ch[1])};
+  for (long k = j + 1; k <= std::min(j_hi, j + 4); ++k) {
+    switch (((k % 4) + 4) % 4) {
+      case 0: c.hi = 1; break;   // cos 2mπ = 1
+      case 1: s.hi = 1; break;   // sin (2m + 1/2)π = 1
+      case 2: c.lo = -1; break;  // cos (2m + 1)π = −1
+      case 3: s.lo = -1; break;  // sin (2m − 1/2)π = −1
+    }
+  }
+  s = {std::max(-1.0, s.lo), std::min(1.0, s.hi)};
+  c = {std::max(-1.0, c.lo), std::min(1.0, c.hi)};
   return true;
 }
 

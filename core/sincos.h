@@ -4,7 +4,9 @@
 // constant), and MPFI computes each with two correctly rounded evaluations plus its own
 // quadrant analysis. When [a] lies strictly inside one quadrant (no multiple of π/2 in
 // it), sin and cos are both monotone there: their ranges are spanned by the values at the
-// endpoints, and one sin-and-cos per endpoint gives all four. Otherwise MPFI decides.
+// endpoints, and one sin-and-cos per endpoint gives all four. Otherwise MPFI decides,
+// except at 53 bits when each end lies strictly inside a quadrant: then the critical
+// points inside are the multiples of π/2 between the ends' quadrants.
 // At 53 bits (endpoints are doubles) the endpoint values come from Arb's arb_sin_cos, a
 // rigorous ball, rounded outward to doubles: about four times faster than mpfr_sin_cos,
 // which was a fifth of the run time (bench/RESULTS.md). Above 53 bits, MPFR in RNDN with
@@ -31,8 +33,8 @@ class SinCos {
 
   // s ⊇ {sin t : t ∈ a}, c ⊇ {cos t : t ∈ a}.
   void enclose(const Interval& a, Interval& s, Interval& c);
-  // The same at 53 bits for a = [lo, hi] (doubles) inside one quadrant, in doubles. False,
-  // with nothing computed, at another precision or when a may hold a multiple of π/2.
+  // The same at 53 bits for a = [lo, hi] (doubles), in doubles. False, with nothing
+  // computed, at another precision or when an end may be a multiple of π/2.
   bool enclose_doubles(double lo, double hi, DInterval& s, DInterval& c);
 
  private:

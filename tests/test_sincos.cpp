@@ -5,7 +5,8 @@
 // fast path it must also be tight (within a few ulps of it).
 // At 53 bits the endpoint values come from Arb, above from MPFR (HigherPrecisionStaysSound).
 // Break it to see it fail: swap `sin_up` for `!sin_up` in sincos.cpp (both random
-// tests fail), or round Arb's ball outward the wrong way in ArbBounds::Balls::bounds (FLOOR
+// tests fail), or exchange two critical values across quadrants (AcrossQuadrantsIsTight
+// and RandomIntervalsContainTheExactRange fail), or round Arb's ball outward the wrong way in ArbBounds::Balls::bounds (FLOOR
 // and CEIL exchanged: the containment tests fail). The 1e-9 margin of the quadrant test
 // cannot be caught this way: an extremum within rounding of an endpoint changes the range
 // by far less than the one-ulp outward step; the margin is there by the error bound
@@ -98,6 +99,19 @@ TEST(SinCos, InsideOneQuadrantIsTight) {
   for (int i = 0; i < 5000; ++i) {
     double lo = (std::floor(quadrant(rng)) + frac(rng)) * M_PI_2;
     check(lo, lo + w(rng), true);
+  }
+}
+
+// Ends in different quadrants, each safely inside its own: the range is the ends' values
+// and ±1 at the critical points between, as tight as in one quadrant.
+TEST(SinCos, AcrossQuadrantsIsTight) {
+  set_working_precision(53);
+  std::mt19937_64 rng(10);
+  std::uniform_real_distribution<double> quadrant(-40, 40), frac(0.01, 0.98);
+  for (int i = 0; i < 5000; ++i) {
+    double lo = (std::floor(quadrant(rng)) + frac(rng)) * M_PI_2;
+    double hi = (std::floor(lo / M_PI_2) + 1 + double(i % 5) + frac(rng)) * M_PI_2;
+    check(lo, hi, true);
   }
 }
 
