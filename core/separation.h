@@ -43,7 +43,8 @@ class SignSeparation {
   int32_t find(int s, int32_t b);
   int boxes_, p_;
   const std::vector<int8_t>& signs_;
-  // Per class, a forest over all boxes (union by rank, path halving): 5 bytes per box.
+  // Per class holding some box, a forest over all boxes (union by rank, path halving):
+  // 5 bytes per box; empty for the other classes.
   std::vector<std::vector<int32_t>> parent_;
   std::vector<std::vector<uint8_t>> rank_;
 };

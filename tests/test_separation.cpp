@@ -11,6 +11,8 @@
 //    fail (one aspect counted twice);
 //  - `exact` dropped (a certified box counted in every compatible class):
 //    AStraddlingCertifiedBoxCountsNowhere and RandomBoxSetsMatchBruteForce fail.
+//  - the classes some box is in judged with the opposite signs (a class with boxes left
+//    without a forest): RandomBoxSetsMatchBruteForce fails.
 #include <gtest/gtest.h>
 
 #include <random>
