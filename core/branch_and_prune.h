@@ -21,15 +21,17 @@ namespace aspects {
 // cell, which may hold solutions, like an undecided box.
 enum class LeafFate : uint8_t { Solution, Undecided, Discarded, Deferred, Unexplored };
 
+// 32 bytes (the double first, the byte last): 39 M nodes on 3-RPR at eps 0.3.
 struct SearchNode {
+  double split = 0;               // exact split point: left has v <= split, right v >= split
   int32_t left = -1, right = -1;  // children (internal nodes)
   int32_t split_var = -1;         // bisected variable (internal nodes)
-  double split = 0;               // exact split point: left has v <= split, right v >= split
   int32_t leaf = -1;              // leaf: index of the output box in R, or -1 (discarded);
                                   // deferred node: index of its subtree task
-  LeafFate fate = LeafFate::Discarded;
   int32_t reason = -1;            // discarded leaf: what refuted it (see Steps::prune)
+  LeafFate fate = LeafFate::Discarded;
 };
+static_assert(sizeof(SearchNode) == 32, "a tree node stays 32 bytes");
 
 class BranchAndPruneSteps {
  public:
