@@ -3,6 +3,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <exception>
+#include <functional>
+#include <future>
 #include <memory>
 #include <thread>
 #include <cmath>
@@ -299,12 +302,36 @@ int run_solve(const SolveOptions& opts) {
   keep_link_pairs_only(r);  // the outputs need only N: M is freed before they are written
 
   if (!o.out_dir.empty()) {
-    if (cert) cert->finish(model, r);
-    write_boxes_csv(model, r, o.out_dir + "/boxes.csv");
+    // Three files that only read `r`, written at once: one after the other they took 116 s
+    // of 3-RPR at eps 0.3 (15 GB). Each is complete or absent (atomic rename); the first
+    // failure is reported once all three have ended.
+    auto in_thread = [&](std::function<void()> write) {
+      return std::async(std::launch::async, [&o, write] {
+        set_working_precision(o.prec);  // a new thread starts at MPFR's default
+        write();
+      });
+    };
+    std::future<void> csv = in_thread([&] { write_boxes_csv(model, r, o.out_dir + "/boxes.csv"); });
     // What `aspects query` and `aspects path` read instead of re-solving.
     const std::string model_file = o.model_path.empty() ? "(embedded RRRRR)" : o.model_path;
-    write_result_index(o.out_dir + "/" + kResultIndexName,
-                       build_result_index(model, r, o.prec, o.tau, o.eps, model_file));
+    std::future<void> index = in_thread([&] {
+      write_result_index(o.out_dir + "/" + kResultIndexName,
+                         build_result_index(model, r, o.prec, o.tau, o.eps, model_file));
+    });
+    std::exception_ptr failure;
+    try {
+      if (cert) cert->finish(model, r);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    for (std::future<void>* f : {&csv, &index}) {
+      try {
+        f->get();
+      } catch (...) {
+        if (!failure) failure = std::current_exception();
+      }
+    }
+    if (failure) std::rethrow_exception(failure);
     write_file_atomically(o.out_dir + "/summary.json", summary_json(model, o, r).dump(2) + "\n");
   }
   if (!o.quiet) {
