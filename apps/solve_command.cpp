@@ -304,27 +304,28 @@ int run_solve(const SolveOptions& opts) {
   if (!o.out_dir.empty()) {
     // Three files that only read `r`, written at once: one after the other they took 116 s
     // of 3-RPR at eps 0.3 (15 GB). Each is complete or absent (atomic rename); the first
-    // failure is reported once all three have ended.
+    // failure is reported once all three have ended. The index, the one that allocates
+    // (per-box vectors), is built on this thread, whose heap the freed search state left.
     auto in_thread = [&](std::function<void()> write) {
       return std::async(std::launch::async, [&o, write] {
         set_working_precision(o.prec);  // a new thread starts at MPFR's default
         write();
       });
     };
-    std::future<void> csv = in_thread([&] { write_boxes_csv(model, r, o.out_dir + "/boxes.csv"); });
-    // What `aspects query` and `aspects path` read instead of re-solving.
-    const std::string model_file = o.model_path.empty() ? "(embedded RRRRR)" : o.model_path;
-    std::future<void> index = in_thread([&] {
-      write_result_index(o.out_dir + "/" + kResultIndexName,
-                         build_result_index(model, r, o.prec, o.tau, o.eps, model_file));
+    std::future<void> certificate = in_thread([&] {
+      if (cert) cert->finish(model, r);
     });
+    std::future<void> csv = in_thread([&] { write_boxes_csv(model, r, o.out_dir + "/boxes.csv"); });
     std::exception_ptr failure;
     try {
-      if (cert) cert->finish(model, r);
+      // What `aspects query` and `aspects path` read instead of re-solving.
+      const std::string model_file = o.model_path.empty() ? "(embedded RRRRR)" : o.model_path;
+      write_result_index(o.out_dir + "/" + kResultIndexName,
+                         build_result_index(model, r, o.prec, o.tau, o.eps, model_file));
     } catch (...) {
       failure = std::current_exception();
     }
-    for (std::future<void>* f : {&csv, &index}) {
+    for (std::future<void>* f : {&certificate, &csv}) {
       try {
         f->get();
       } catch (...) {
