@@ -22,6 +22,14 @@ class BoxStore {
     }
     return size() - 1;
   }
+  // Box i of `from` (same nv), copied exactly.
+  int push_copy(const BoxStore& from, int i) {
+    const double* p = &from.coords_[size_t(i) * 2 * nv_];
+    coords_.insert(coords_.end(), p, p + 2 * size_t(nv_));
+    return size() - 1;
+  }
+  void reserve(size_t boxes) { coords_.reserve(boxes * 2 * size_t(nv_)); }
+  void release() { std::vector<double>().swap(coords_); }  // empty, memory returned
   // The endpoints, box after box (lo, hi per variable): for checkpoints.
   const std::vector<double>& coords() const { return coords_; }
   void append_coords(const double* lohi, size_t boxes) {
