@@ -299,7 +299,6 @@ int run_solve(const SolveOptions& opts) {
   }
   AspectsResult r = compute_aspects(model, cfg);
   if (show) progress.done(model, r, resident_mib());
-  keep_link_pairs_only(r);  // the outputs need only N: M is freed before they are written
 
   if (!o.out_dir.empty()) {
     // Three files that only read `r`, written at once: one after the other they took 116 s

@@ -82,11 +82,10 @@ struct AspectsResult {
   std::vector<UndecidedKind> undecided_kind;
   std::vector<int8_t> signs;            // factors.size() per box
   std::vector<SearchNode> tree;
-  // M's pairs between solution boxes (or only N's pairs: keep_link_pairs_only); the
-  // rest of M is not kept.
+  // N's pairs, in the order proved (M itself is never held: neighbor_count counts it).
   std::vector<NeighborPair> neighbors;
   size_t neighbor_count = 0;            // |M|
-  std::vector<int32_t> certified_links; // indices into neighbors: N
+  std::vector<int32_t> certified_links; // indices into neighbors: N (0, 1, 2, ...)
   LinkRecords link_proofs;              // parallel to certified_links (if kept)
   std::vector<int32_t> csnc;            // box -> CSNC (decreasing size), -1 for undecided
   std::vector<int64_t> csnc_sizes;
@@ -106,9 +105,5 @@ struct AspectsResult {
 };
 
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config);
-
-// Drops the neighbour pairs no certified link names, renumbering certified_links: what the
-// outputs need (the checker recomputes M).
-void keep_link_pairs_only(AspectsResult& r);
 
 }  // namespace aspects

@@ -124,9 +124,9 @@ TEST(NeighborhoodGraph, SameListForAnyBlockOrder) {
   }
 }
 
-// The solver never holds M: it streams it through the separation and keeps the pairs
-// between solution boxes. Those must be M's, in M's order, and the bound and the
-// representatives must be those of the separation run on the whole of M.
+// The solver never holds M: it streams it through the separation and through the rounds
+// of links. The links must be pairs of M between solution boxes, in M's order, and the
+// bound and the representatives must be those of the separation run on the whole of M.
 TEST(NeighborhoodGraph, StreamedMGivesTheWholeMsResults) {
   set_working_precision(53);
   Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
@@ -136,16 +136,18 @@ TEST(NeighborhoodGraph, StreamedMGivesTheWholeMsResults) {
   std::vector<bool> periodic;
   for (const auto& v : m.vars) periodic.push_back(v.periodic);
   std::vector<NeighborPair> M = neighbor_pairs(r.tree, r.boxes, periodic);
-  std::vector<NeighborPair> sol;
-  for (const NeighborPair& e : M)
-    if (r.certified[e.a] && r.certified[e.b]) sol.push_back(e);
-  ASSERT_GT(sol.size(), 1000u);
-  ASSERT_LT(sol.size(), M.size());
-  ASSERT_EQ(sol.size(), r.neighbors.size());
-  for (size_t i = 0; i < sol.size(); ++i) {
-    ASSERT_EQ(sol[i].a, r.neighbors[i].a);
-    ASSERT_EQ(sol[i].b, r.neighbors[i].b);
-    ASSERT_EQ(sol[i].shift_code, r.neighbors[i].shift_code);
+  ASSERT_EQ(M.size(), r.neighbor_count);
+  ASSERT_GT(r.neighbors.size(), 1000u);
+  ASSERT_EQ(r.certified_links.size(), r.neighbors.size());
+  size_t at = 0;  // N is a subsequence of M
+  for (size_t i = 0; i < r.neighbors.size(); ++i) {
+    ASSERT_EQ(r.certified_links[i], int32_t(i));
+    const NeighborPair& e = r.neighbors[i];
+    while (at < M.size() && (M[at].a != e.a || M[at].b != e.b)) ++at;
+    ASSERT_LT(at, M.size()) << "link " << i << " is not in M, or out of M's order";
+    EXPECT_EQ(M[at].shift_code, e.shift_code);
+    EXPECT_TRUE(r.certified[e.a] && r.certified[e.b]);
+    ++at;
   }
   SeparationResult whole = separate_by_signs(r.boxes.size(), int(r.factors.size()), r.signs,
                                              r.certified, M, &r.csnc);
