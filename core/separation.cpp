@@ -1,43 +1,43 @@
 #include "separation.h"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 namespace aspects {
 
-SignSeparation::SignSeparation(int boxes, int p, const std::vector<int8_t>& signs)
-    : boxes_(boxes), p_(p), signs_(signs), parent_(size_t(1) << p), rank_(size_t(1) << p) {
-  // A forest only for the classes some box is in: a factor of fixed sign (3-RPR's
-  // diagonal of Fq, −2 q_i with q_i ≥ 10) empties half of the classes, and at eps 0.3
-  // each forest costs 79 MB. The boxes have at most 3^p distinct sign vectors.
-  std::vector<uint8_t> seen(size_t(std::pow(3, p)), 0);
+std::vector<uint32_t> SignSeparation::counting_classes(int boxes, int p,
+                                                       const std::vector<int8_t>& signs,
+                                                       const std::vector<uint8_t>& certified) {
+  std::vector<uint32_t> classes;
   for (int32_t b = 0; b < boxes; ++b) {
-    size_t code = 0;
-    for (int i = 0; i < p; ++i) code = 3 * code + size_t(signs[size_t(b) * p + i] + 1);
-    seen[code] = 1;
-  }
-  std::vector<uint8_t> used(parent_.size(), 0);
-  for (size_t code = 0; code < seen.size(); ++code) {
-    if (!seen[code]) continue;
-    std::vector<int8_t> sign(p);
-    for (int i = p - 1, c = int(code); i >= 0; --i, c /= 3) sign[i] = int8_t(c % 3 - 1);
-    for (size_t s = 0; s < used.size(); ++s) {
-      bool ok = true;
-      for (int i = 0; i < p; ++i) ok = ok && sign[i] != ((s >> i) & 1 ? -1 : 1);
-      used[s] = used[s] || ok;
+    if (!certified[b]) continue;
+    uint32_t s = 0;
+    bool exact = true;
+    for (int i = 0; i < p; ++i) {
+      const int8_t x = signs[size_t(b) * p + i];
+      exact = exact && x != 0;
+      s |= uint32_t(x > 0) << i;
     }
+    if (exact) classes.push_back(s);
   }
-  for (size_t s = 0; s < parent_.size(); ++s) {
-    if (!used[s]) continue;
-    parent_[s].resize(boxes);
-    std::iota(parent_[s].begin(), parent_[s].end(), 0);
-    rank_[s].assign(boxes, 0);
+  std::sort(classes.begin(), classes.end());
+  classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+  return classes;
+}
+
+SignSeparation::SignSeparation(int boxes, int p, const std::vector<int8_t>& signs,
+                               std::vector<uint32_t> classes)
+    : boxes_(boxes), p_(p), signs_(signs), classes_(std::move(classes)),
+      parent_(classes_.size()), rank_(classes_.size()) {
+  for (size_t c = 0; c < classes_.size(); ++c) {
+    parent_[c].resize(boxes);
+    std::iota(parent_[c].begin(), parent_[c].end(), 0);
+    rank_[c].assign(boxes, 0);
   }
 }
 
 // In class s, box b is in R^s unless some factor certainly has the opposite sign.
-bool SignSeparation::compatible(int s, int32_t b) const {
+bool SignSeparation::compatible(uint32_t s, int32_t b) const {
   for (int i = 0; i < p_; ++i) {
     int want = (s >> i) & 1 ? 1 : -1;
     if (signs_[size_t(b) * p_ + i] == -want) return false;
@@ -45,14 +45,14 @@ bool SignSeparation::compatible(int s, int32_t b) const {
   return true;
 }
 
-bool SignSeparation::exact(int s, int32_t b) const {
+bool SignSeparation::exact(uint32_t s, int32_t b) const {
   for (int i = 0; i < p_; ++i)
     if (signs_[size_t(b) * p_ + i] != ((s >> i) & 1 ? 1 : -1)) return false;
   return true;
 }
 
-int32_t SignSeparation::find(int s, int32_t b) {
-  std::vector<int32_t>& par = parent_[s];
+int32_t SignSeparation::find(size_t c, int32_t b) {
+  std::vector<int32_t>& par = parent_[c];
   while (par[b] != b) {
     par[b] = par[par[b]];
     b = par[b];
@@ -61,13 +61,13 @@ int32_t SignSeparation::find(int s, int32_t b) {
 }
 
 void SignSeparation::add(const std::vector<NeighborPair>& pairs, const ForEachIndex& for_each) {
-  for_each(int(parent_.size()), [&](int32_t s) {
-    if (parent_[s].empty()) return;  // no box in the class
-    std::vector<int32_t>& par = parent_[s];
-    std::vector<uint8_t>& rank = rank_[s];
+  for_each(int(classes_.size()), [&](int32_t c) {
+    const uint32_t s = classes_[c];
+    std::vector<int32_t>& par = parent_[c];
+    std::vector<uint8_t>& rank = rank_[c];
     for (const NeighborPair& e : pairs) {
       if (!compatible(s, e.a) || !compatible(s, e.b)) continue;
-      int32_t ra = find(s, e.a), rb = find(s, e.b);
+      int32_t ra = find(c, e.a), rb = find(c, e.b);
       if (ra == rb) continue;
       if (rank[ra] < rank[rb]) std::swap(ra, rb);
       par[rb] = ra;
@@ -79,15 +79,14 @@ void SignSeparation::add(const std::vector<NeighborPair>& pairs, const ForEachIn
 SeparationResult SignSeparation::result(const std::vector<uint8_t>& certified,
                                         const std::vector<int32_t>* csnc) {
   SeparationResult out;
-  const int classes = int(parent_.size());
-  out.per_class.assign(classes, 0);
+  out.per_class.assign(size_t(1) << p_, 0);
   std::vector<int32_t> counted(boxes_);  // per root: 0, or 1 + index in representatives
-  for (int s = 0; s < classes; ++s) {
-    if (parent_[s].empty()) continue;  // no box in the class, none counted
+  for (size_t c = 0; c < classes_.size(); ++c) {
+    const uint32_t s = classes_[c];
     std::fill(counted.begin(), counted.end(), 0);
     for (int32_t b = 0; b < boxes_; ++b) {
       if (!certified[b] || !exact(s, b)) continue;
-      int32_t root = find(s, b);
+      int32_t root = find(c, b);
       if (!counted[root]) {
         out.representatives.push_back(-1);
         counted[root] = int32_t(out.representatives.size());
@@ -103,11 +102,20 @@ SeparationResult SignSeparation::result(const std::vector<uint8_t>& certified,
   return out;
 }
 
+void merge_separation(SeparationResult& total, const SeparationResult& part) {
+  total.lower_bound += part.lower_bound;
+  if (total.per_class.size() < part.per_class.size()) total.per_class.resize(part.per_class.size());
+  for (size_t s = 0; s < part.per_class.size(); ++s) total.per_class[s] += part.per_class[s];
+  total.representatives.insert(total.representatives.end(), part.representatives.begin(),
+                               part.representatives.end());
+  std::sort(total.representatives.begin(), total.representatives.end());
+}
+
 SeparationResult separate_by_signs(int boxes, int p, const std::vector<int8_t>& signs,
                                    const std::vector<uint8_t>& certified,
                                    const std::vector<NeighborPair>& M,
                                    const std::vector<int32_t>* csnc) {
-  SignSeparation sep(boxes, p, signs);
+  SignSeparation sep(boxes, p, signs, SignSeparation::counting_classes(boxes, p, signs, certified));
   sep.add(M);
   return sep.result(certified, csnc);
 }

@@ -23,31 +23,40 @@ struct SeparationResult {
   std::vector<int32_t> representatives;
 };
 
-// The components of every (R^s, M^s), fed M a piece at a time in any order (union–find
-// does not depend on it), so that M need never be held whole: on 3-RPR at eps 0.3 it is
-// 479 M pairs, 5.8 GB.
+// The components of every (R^s, M^s) for a list of classes s, fed M a piece at a time in
+// any order (union–find does not depend on it), so that M need never be held whole: on
+// 3-RPR at eps 0.3 it is 479 M pairs, 5.8 GB.
 class SignSeparation {
  public:
+  // The classes that can count, increasing: those of the certified boxes whose factors all
+  // have a certain sign (the others count nothing). On 3-RPR, 2 of 16: three of its four
+  // factors, −2 q_i with q_i ≥ 10, have a fixed sign.
+  static std::vector<uint32_t> counting_classes(int boxes, int p, const std::vector<int8_t>& signs,
+                                                const std::vector<uint8_t>& certified);
   // signs: p entries per box (−1, 0 = may vanish, +1). Keeps a reference to `signs`.
-  SignSeparation(int boxes, int p, const std::vector<int8_t>& signs);
+  // A forest over all boxes per class of `classes`: 5 bytes per box and class.
+  SignSeparation(int boxes, int p, const std::vector<int8_t>& signs,
+                 std::vector<uint32_t> classes);
   // Joins the pairs' boxes in every class holding both; the classes run through `for_each`.
   void add(const std::vector<NeighborPair>& pairs, const ForEachIndex& for_each = serial_for_each);
   // certified: 1 for solution boxes; csnc (optional): component of each box by decreasing
-  // size (-1 for none).
+  // size (-1 for none). Counts for this object's classes only (per_class: 0 for others).
   SeparationResult result(const std::vector<uint8_t>& certified,
                           const std::vector<int32_t>* csnc = nullptr);
 
  private:
-  bool compatible(int s, int32_t b) const;
-  bool exact(int s, int32_t b) const;
-  int32_t find(int s, int32_t b);
+  bool compatible(uint32_t s, int32_t b) const;
+  bool exact(uint32_t s, int32_t b) const;
+  int32_t find(size_t c, int32_t b);
   int boxes_, p_;
   const std::vector<int8_t>& signs_;
-  // Per class holding some box, a forest over all boxes (union by rank, path halving):
-  // 5 bytes per box; empty for the other classes.
-  std::vector<std::vector<int32_t>> parent_;
-  std::vector<std::vector<uint8_t>> rank_;
+  std::vector<uint32_t> classes_;
+  std::vector<std::vector<int32_t>> parent_;  // per class of classes_ (union by rank,
+  std::vector<std::vector<uint8_t>> rank_;    // path halving)
 };
+
+// Adds the counts of other classes (from another SignSeparation) to `total`.
+void merge_separation(SeparationResult& total, const SeparationResult& part);
 
 // The whole computation on a listed M.
 SeparationResult separate_by_signs(int boxes, int p, const std::vector<int8_t>& signs,

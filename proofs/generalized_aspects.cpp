@@ -475,7 +475,18 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // M streams through the separation's union–find (4.4.2) and, its pairs between solution
   // boxes, through the rounds of links: neither M nor those pairs (150 M, 1.8 GB, on 3-RPR
   // at eps 0.3) are ever held whole. The rounds are those of the whole list.
-  SignSeparation separation(out.boxes.size(), int(out.factors.size()), out.signs);
+  // Forests for as many sign classes as fit in 1 GiB; any others (a model with many
+  // factors that may vanish together) take passes over M of their own, below.
+  const int p = int(out.factors.size());
+  const std::vector<uint32_t> classes =
+      SignSeparation::counting_classes(out.boxes.size(), p, out.signs, out.certified);
+  const size_t per_pass =
+      std::max<size_t>(1, (size_t(1) << 30) / (5 * size_t(std::max(1, out.boxes.size()))));
+  auto pass_classes = [&](size_t first_class) {
+    const size_t last_class = std::min(classes.size(), first_class + per_pass);
+    return std::vector<uint32_t>(classes.begin() + first_class, classes.begin() + last_class);
+  };
+  SignSeparation separation(out.boxes.size(), p, out.signs, pass_classes(0));
   stream_neighbor_pairs(
       out.tree, out.boxes, periodic,
       [&](const std::vector<NeighborPair>& piece) {
@@ -510,6 +521,13 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
 
   // 4.4.2: separation by factor signs; the certified lower bound (11).
   out.separation = separation.result(out.certified, &out.csnc);
+  for (size_t c = per_pass; c < classes.size(); c += per_pass) {
+    SignSeparation more(out.boxes.size(), p, out.signs, pass_classes(c));
+    stream_neighbor_pairs(
+        out.tree, out.boxes, periodic,
+        [&](const std::vector<NeighborPair>& piece) { more.add(piece, in_arena); }, in_arena);
+    merge_separation(out.separation, more.result(out.certified, &out.csnc));
+  }
   lap("components and separation");
   // Paper 3.2: "one pose, two commands" witnesses of cuspidality inside each CSNC. The
   // CSNCs are searched in parallel; the witnesses are the same for any thread count.
