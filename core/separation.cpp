@@ -1,7 +1,6 @@
 #include "separation.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace aspects {
 
@@ -31,8 +30,9 @@ SignSeparation::SignSeparation(int boxes, int p, const std::vector<int8_t>& sign
       parent_(classes_.size()), rank_(classes_.size()) {
   for (size_t c = 0; c < classes_.size(); ++c) {
     parent_[c].resize(boxes);
-    std::iota(parent_[c].begin(), parent_[c].end(), 0);
-    rank_[c].assign(boxes, 0);
+    rank_[c].resize(boxes);
+    Forest joined = forest(c);
+    for (int32_t b = 0; b < boxes; ++b) joined.make_set(b);
   }
 }
 
@@ -51,28 +51,17 @@ bool SignSeparation::exact(uint32_t s, int32_t b) const {
   return true;
 }
 
-int32_t SignSeparation::find(size_t c, int32_t b) {
-  std::vector<int32_t>& par = parent_[c];
-  while (par[b] != b) {
-    par[b] = par[par[b]];
-    b = par[b];
-  }
-  return b;
+// Boost's disjoint sets over class c's arrays (a view: it owns nothing).
+SignSeparation::Forest SignSeparation::forest(size_t c) {
+  return Forest(rank_[c].data(), parent_[c].data());
 }
 
 void SignSeparation::add(const std::vector<NeighborPair>& pairs, const ForEachIndex& for_each) {
   for_each(int(classes_.size()), [&](int32_t c) {
     const uint32_t s = classes_[c];
-    std::vector<int32_t>& par = parent_[c];
-    std::vector<uint8_t>& rank = rank_[c];
-    for (const NeighborPair& e : pairs) {
-      if (!compatible(s, e.a) || !compatible(s, e.b)) continue;
-      int32_t ra = find(c, e.a), rb = find(c, e.b);
-      if (ra == rb) continue;
-      if (rank[ra] < rank[rb]) std::swap(ra, rb);
-      par[rb] = ra;
-      rank[ra] += rank[ra] == rank[rb];
-    }
+    Forest joined = forest(c);
+    for (const NeighborPair& e : pairs)
+      if (compatible(s, e.a) && compatible(s, e.b)) joined.union_set(e.a, e.b);
   });
 }
 
@@ -83,10 +72,11 @@ SeparationResult SignSeparation::result(const std::vector<uint8_t>& certified,
   std::vector<int32_t> counted(boxes_);  // per root: 0, or 1 + index in representatives
   for (size_t c = 0; c < classes_.size(); ++c) {
     const uint32_t s = classes_[c];
+    Forest joined = forest(c);
     std::fill(counted.begin(), counted.end(), 0);
     for (int32_t b = 0; b < boxes_; ++b) {
       if (!certified[b] || !exact(s, b)) continue;
-      int32_t root = find(c, b);
+      int32_t root = joined.find_set(b);
       if (!counted[root]) {
         out.representatives.push_back(-1);
         counted[root] = int32_t(out.representatives.size());

@@ -7,6 +7,8 @@
 // boxes R cover every solution), distinct counted components hold distinct aspects.
 #pragma once
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <cstdint>
 #include <vector>
 
@@ -47,12 +49,15 @@ class SignSeparation {
  private:
   bool compatible(uint32_t s, int32_t b) const;
   bool exact(uint32_t s, int32_t b) const;
-  int32_t find(size_t c, int32_t b);
+  using Forest = boost::disjoint_sets<uint8_t*, int32_t*>;
+  Forest forest(size_t c);
   int boxes_, p_;
   const std::vector<int8_t>& signs_;
   std::vector<uint32_t> classes_;
-  std::vector<std::vector<int32_t>> parent_;  // per class of classes_ (union by rank,
-  std::vector<std::vector<uint8_t>> rank_;    // path halving)
+  // Per class of classes_, the forest's arrays: ranks in a byte (they stay below
+  // log2 of the box count), 5 bytes per box.
+  std::vector<std::vector<int32_t>> parent_;
+  std::vector<std::vector<uint8_t>> rank_;
 };
 
 // Adds the counts of other classes (from another SignSeparation) to `total`.
