@@ -180,8 +180,7 @@ class PartMerger {
       : parts_(parts), out_(out), p_(out.factors.size()) {}
 
   // Room for everything first, and each part's arrays freed once grafted: the merge used
-  // to hold the search's tree and boxes twice, and more while vectors grew (the peak of
-  // 3-RPR at eps 0.3, 8.6 GB).
+  // to hold the search's tree and boxes twice, and more while vectors grew.
   void merge(SearchPart& top) {
     size_t nodes = top.tree.size(), boxes = top.out.boxes.size();
     for (const SearchPart& part : parts_) {
@@ -472,10 +471,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     }
     first += count;
   };
-  // M streams through the separation's union–find (4.4.2) and, its pairs between solution
-  // boxes, through the rounds of links: neither M nor those pairs (150 M, 1.8 GB, on 3-RPR
-  // at eps 0.3) are ever held whole. The rounds are those of the whole list.
-  // Forests for as many sign classes as fit in 1 GiB; any others (a model with many
+  // 4.4.2: forests for as many sign classes as fit in 1 GiB; any others (a model with many
   // factors that may vanish together) take passes over M of their own, below.
   const int p = int(out.factors.size());
   const std::vector<uint32_t> classes =
@@ -487,6 +483,9 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
     return std::vector<uint32_t>(classes.begin() + first_class, classes.begin() + last_class);
   };
   SignSeparation separation(out.boxes.size(), p, out.signs, pass_classes(0));
+  // M streams through the separation's union–find and, its pairs between solution boxes,
+  // through the rounds of links: neither M nor those pairs (150 M, 1.8 GB, on 3-RPR at
+  // eps 0.3) are ever held whole. The rounds are those of the whole list.
   stream_neighbor_pairs(
       out.tree, out.boxes, periodic,
       [&](const std::vector<NeighborPair>& piece) {
