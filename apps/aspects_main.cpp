@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
                   "give the same ends faster (a cross-check: the same certificate)");
   solve->add_option("--bisect", so.bisect,
                     "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose "
-                    "where it blocked the proof, else round robin)")
+                    "where it blocked the proof, else round robin); default: the model's "
+                    "`bisect` statement, else round-robin")
       ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}))
       ->default_val("round-robin");
   solve->add_option("--time-limit", so.time_limit,

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <functional>
@@ -228,6 +229,11 @@ int run_solve(const SolveOptions& opts) {
                 : o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
                                        : load_model(o.model_path);
 
+  // The model's `bisect` statement chooses unless --bisect is given (a resumed run has the
+  // one its checkpoint names).
+  const bool bisect_given = std::count(o.given.begin(), o.given.end(), "--bisect") > 0;
+  if (!resumed && !bisect_given && !model.bisect.empty()) o.bisect = model.bisect;
+
   AspectsConfig cfg;
   cfg.eps = o.eps;
   cfg.tau = o.tau;
@@ -335,8 +341,8 @@ int run_solve(const SolveOptions& opts) {
     write_file_atomically(o.out_dir + "/summary.json", summary_json(model, o, r).dump(2) + "\n");
   }
   if (!o.quiet) {
-    std::printf("robot %s  eps %g  precision %ld bits  tau %g\n", model.name.c_str(), o.eps,
-                o.prec, o.tau);
+    std::printf("robot %s  eps %g  precision %ld bits  tau %g  bisect %s\n", model.name.c_str(),
+                o.eps, o.prec, o.tau, o.bisect.c_str());
     if (r.complete())
       std::printf("boxes: %d (%ld solution, %ld undecided)\n", r.boxes.size(), r.solutions,
                   r.undecided);

@@ -69,6 +69,9 @@ struct Model {
   std::string name;
   std::string file;     // path as given, for messages
   std::string source;   // the model text, verbatim
+  // `bisect NAME`: the search's bisector for this robot unless --bisect is given (empty:
+  // not stated). A search choice only: the certificate is checked the same way.
+  std::string bisect;
   Dag dag;
   std::vector<Variable> vars;  // model order (order of declaration)
   std::vector<int> pose;       // indices into vars

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "eval.h"
+#include "bisector.h"
 #include "exact_period.h"
 #include "model.h"
 
@@ -208,6 +209,15 @@ class Parser {
       std::string name;
       while (peek().kind != Tok::Newline) name += next().text;
       m_.name = name;
+    } else if (k == "bisect") {
+      if (!m_.bisect.empty()) fail(kw, "duplicate 'bisect' statement");
+      const Token& at = peek();
+      std::string name;  // "pose-first" is three tokens: up to the end of the line
+      while (peek().kind != Tok::Newline && peek().kind != Tok::End) name += next().text;
+      BisectorKind kind;
+      if (!parse_bisector_kind(name, kind))
+        fail(at, "unknown bisector '" + name + "' (expected round-robin, pose-first or verdict)");
+      m_.bisect = name;
     } else if (k == "constant" || k == "let") {
       Token name = expect_new_name();
       expect_punct("=");
@@ -244,7 +254,8 @@ class Parser {
       m_.constraints.push_back({root, source_text(start, p_), at.line});
     } else {
       fail(kw, "unknown statement '" + k +
-                   "' (expected robot, constant, let, pose, command, equation or factor)");
+                   "' (expected robot, constant, let, pose, command, equation, factor, constraint or "
+                   "bisect)");
     }
     expect_end_of_statement();
   }

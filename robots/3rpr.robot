@@ -1,6 +1,10 @@
 # 3-RPR, paper Section 5.2, parameters of [29]. (x1, x2): a platform vertex,
 # x3: platform orientation; commands are the three arm lengths.
 robot 3-RPR
+# Each pose has one command (the arm lengths), so the commands need no bisection: cutting
+# the pose first proves boxes whose commands stay as wide as their image. At eps 0.3: 9.3 M
+# boxes and 319 s instead of 15.7 M and 629 s with round robin (bench/RESULTS.md).
+bisect pose-first
 pose    x1 in [-50, 50]
 pose    x2 in [-50, 50]
 pose    x3 in [-pi, pi] periodic

@@ -117,6 +117,18 @@ TEST_F(ParserTest, ThreeRpr) {
   EXPECT_EQ(m.equation_text.size(), 3u);
 }
 
+// `bisect NAME` names the robot's bisector ("pose-first" is three tokens); unstated, empty.
+TEST_F(ParserTest, BisectStatement) {
+  const std::string H = "robot T\npose x in [0, 1]\ncommand q in [0, 1]\n";
+  for (const char* name : {"round-robin", "pose-first", "verdict"}) {
+    Model m = parse_model(H + "bisect " + name + "  # why\nequation x - q = 0\n", "b.robot");
+    EXPECT_EQ(m.bisect, name);
+  }
+  EXPECT_EQ(parse_model(H + "equation x - q = 0\n", "b.robot").bisect, "");
+  EXPECT_EQ(load_model(robots("3rpr.robot")).bisect, "pose-first");
+  EXPECT_EQ(load_model(robots("rrrrr.robot")).bisect, "");
+}
+
 TEST_F(ParserTest, ThreeRrrStar) {
   Model m = load_model(robots("3rrr_star.robot"));
   EXPECT_EQ(m.name, "3-RRR*");
@@ -315,6 +327,10 @@ std::vector<ErrorCase> error_cases() {
       {"MalformedNumber", H + "equation x + 1.2.3 = q\n", 4, 14, {"malformed number", "1.2.3"}},
       {"ReservedWord", "robot T\npose sin in [0, 1]\n", 2, 6, {"reserved word", "'sin'"}},
       {"UnknownStatement", "robot T\nfoo x\n", 2, 1, {"unknown statement", "'foo'"}},
+      {"UnknownBisector", H + "bisect widest\nequation x - q = 0\n", 4, 8,
+       {"unknown bisector", "'widest'", "pose-first"}},
+      {"DuplicateBisect", H + "bisect verdict\nbisect pose-first\nequation x - q = 0\n", 5, 1,
+       {"duplicate 'bisect'"}},
       {"DuplicateRobot", "robot T\nrobot U\n", 2, 1, {"duplicate 'robot'"}},
       {"ConstantDependsOnVariable", H + "constant c = x\n", 4, 14, {"depends on a variable"}},
       {"EquationWithoutVariable", H + "equation 1 = 1\n", 4, 10, {"does not depend"}},

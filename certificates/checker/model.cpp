@@ -162,6 +162,8 @@ class Parser {
       if (peek().kind != Tok::Ident && peek().kind != Tok::Number)
         bad(peek(), "expected the robot's name");
       while (peek().kind != Tok::Newline) m_.name += t_[p_++].text;  // e.g. 3-RRR*
+    } else if (k == "bisect") {
+      while (peek().kind != Tok::Newline) ++p_;  // the search's choice: nothing to check
     } else if (k == "constant" || k == "let") {
       std::string name = new_name();
       expect("=");
