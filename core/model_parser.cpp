@@ -627,6 +627,7 @@ Model load_model(const std::string& path) {
 const char* const kDefaultModelText =
     "# RRRRR five-bar, paper Section 5.2 (embedded default of `aspects solve`)\n"
     "robot RRRRR\n"
+    "bisect verdict\n"
     "pose    x1 in [-20, 20]\n"
     "pose    x2 in [-20, 20]\n"
     "command q1 in [-pi, pi] periodic\n"

@@ -22,6 +22,8 @@
 #   --threads N         passed to `aspects solve --threads` (if the tool has it)
 #   --build DIR         build directory holding apps/aspects and certificates/check_cert
 #                       (default: the repository's build/)
+#   --check-jobs N      certificates checked at once, after every solve (default: the
+#                       number of cores; check_cert runs on one core)
 #   --timeout SECONDS   wall-clock limit for each solve and for each check (default none);
 #                       a run that hits it is recorded as "did not finish" and the others go on
 #   --out DIR           output directory (default paper_repro/out)
@@ -62,7 +64,7 @@ declare -A EPS_QUICK=(
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; }
 die_usage() { echo "run_all.sh: $*" >&2; echo "run 'run_all.sh --help' for usage" >&2; exit 2; }
 
-QUICK=0; THREADS=""; TIMEOUT=""; KEEP_BOXES=0; FAIL_FAST=0
+QUICK=0; THREADS=""; TIMEOUT=""; KEEP_BOXES=0; FAIL_FAST=0; CHECK_JOBS=$(nproc)
 BUILD="$REPO_ROOT/build"; OUT="$SCRIPT_DIR/out"; MODELS="$REPO_ROOT/robots"
 ONLY=(); declare -A EPS_OVERRIDE=()
 ARGV_STR="$0 $*"
@@ -77,6 +79,7 @@ while [ $# -gt 0 ]; do
            EPS_OVERRIDE[${2%%=*}]=${2#*=}; shift ;;
     --threads) [ $# -ge 2 ] || die_usage "--threads needs a number"; THREADS=$2; shift ;;
     --build) [ $# -ge 2 ] || die_usage "--build needs a directory"; BUILD=$2; shift ;;
+    --check-jobs) [ $# -ge 2 ] || die_usage "--check-jobs needs a number"; CHECK_JOBS=$2; shift ;;
     --timeout) [ $# -ge 2 ] || die_usage "--timeout needs seconds"; TIMEOUT=$2; shift ;;
     --out) [ $# -ge 2 ] || die_usage "--out needs a directory"; OUT=$2; shift ;;
     --models) [ $# -ge 2 ] || die_usage "--models needs a directory"; MODELS=$2; shift ;;
@@ -110,6 +113,7 @@ for k in "${!EPS_OVERRIDE[@]}"; do
 done
 [ -z "$THREADS" ] || [[ "$THREADS" =~ ^[1-9][0-9]*$ ]] || die_usage "--threads: not a positive integer: '$THREADS'"
 [ -z "$TIMEOUT" ] || is_pos_number "$TIMEOUT" || die_usage "--timeout: not a positive number: '$TIMEOUT'"
+[[ "$CHECK_JOBS" =~ ^[1-9][0-9]*$ ]] || die_usage "--check-jobs: not a positive integer: '$CHECK_JOBS'"
 
 ASPECTS="$BUILD/apps/aspects"
 CHECK="$BUILD/certificates/check_cert"
@@ -151,10 +155,15 @@ OUT=$(cd "$(dirname "$OUT")" && pwd)/$(basename "$OUT")
 TMP=$(mktemp -d "$(dirname "$OUT")/.$(basename "$OUT").tmp.XXXXXX")
 chmod "$(printf '%o' $(( 0777 & ~$(umask) )))" "$TMP"   # mktemp makes it 0700
 CHILD=""
+CHECK_PIDS=()
 exec 3>&2   # the script's stderr, for messages from traps run inside redirected commands
 cleanup() {
   local sig=$1
   if [ -n "$CHILD" ]; then kill -TERM "$CHILD" 2> /dev/null || true; wait "$CHILD" 2> /dev/null || true; fi
+  # The checks running in the background: their checker or compressor, then themselves.
+  local p
+  for p in "${CHECK_PIDS[@]}"; do pkill -TERM -P "$p" 2> /dev/null || true; kill -TERM "$p" 2> /dev/null || true; done
+  for p in "${CHECK_PIDS[@]}"; do wait "$p" 2> /dev/null || true; done
   rm -rf "$TMP"
   if [ "$sig" != EXIT ]; then
     echo "run_all.sh: interrupted ($sig); $OUT left unchanged" >&3
@@ -196,6 +205,7 @@ N=${#KEYS[@]}
 log "run_all.sh: $MODE mode, ${N} robot(s): ${KEYS[*]}; build $BUILD; staging in $TMP"
 
 i=0
+SOLVED=(); declare -A EPS_OF=() INDEX_OF=()
 for key in "${KEYS[@]}"; do
   i=$((i + 1))
   name=${NAME[$key]}
@@ -248,8 +258,20 @@ for key in "${KEYS[@]}"; do
     if [ $FAIL_FAST -eq 1 ]; then log "run_all.sh: --fail-fast: stopping; nothing written"; exit 1; fi
     continue
   fi
-  log "[$i/$N] $name solved in ${wall} s; check_cert ..."
+  log "[$i/$N] $name solved in ${wall} s"
+  SOLVED+=("$key"); EPS_OF[$key]=$eps; INDEX_OF[$key]=$i
+done
 
+# ------------------------------------------------------------------ checks
+# After every solve, so that the solvers' times are not shared with a checker. check_cert
+# is sequential: up to CHECK_JOBS run at once, the smallest certificates first, so that
+# the largest ones run side by side at the end. Each writes its outcome in its run
+# directory (record.txt, manifest.line, failure.txt); the shell collects them after.
+check_one() {
+  local key=$1 i=${INDEX_OF[$1]} name=${NAME[$1]} eps=${EPS_OF[$1]}
+  local rd="$TMP/runs/$key"
+  local rec="$rd/record.txt"
+  log "[$i/$N] $name check_cert ..."
   cert="$rd/aspects.cert"
   cert_bytes=$(stat -c %s "$cert")
   tool=$(sed -n '2{s/^tool //;p;q}' "$cert")
@@ -257,7 +279,7 @@ for key in "${KEYS[@]}"; do
   t0=$(now); crc=0
   # --json: the table takes the certified bound from check_cert's verdict (check.json),
   # never from the solver's summary.json.
-  run_child "${TIMEOUT_CMD[@]}" "$CHECK" --json "$cert" > "$rd/check.json" 2> "$rd/check.log" || crc=$?
+  "${TIMEOUT_CMD[@]}" "$CHECK" --json "$cert" > "$rd/check.json" 2> "$rd/check.log" || crc=$?
   t1=$(now); cwall=$(elapsed "$t0" "$t1")
   check_line=$(head -n 1 "$rd/check.json")
   verdict=$("$PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["verdict"])' \
@@ -277,24 +299,40 @@ for key in "${KEYS[@]}"; do
     msg="check_cert rejected the certificate (exit $crc): ${check_line:-$(tail -n 2 "$rd/check.log" | tr '\n' ' ')}"
     log "[$i/$N] $name: ERROR: $msg"
     { echo "status=check_failed"; echo "message=$msg"; } >> "$rec"
-    FAILURES+=("$name: $msg")
+    echo "$name: $msg" > "$rd/failure.txt"
   fi
   echo "check=$check" >> "$rec"
 
   # Archive the certificate (also a rejected one: it is the evidence).
   afile="${key}_eps${eps}.cert.$CEXT"
   log "[$i/$N] $name compressing the certificate ($(numfmt --to=iec "$cert_bytes")B) ..."
-  run_child "${COMPRESS[@]}" "$cert" > "$TMP/archive/$afile"
+  "${COMPRESS[@]}" "$cert" > "$TMP/archive/$afile"
   sha_c=$(sha256sum "$TMP/archive/$afile" | cut -d' ' -f1)
   sha_u=$(sha256sum "$cert" | cut -d' ' -f1)
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$afile" "$sha_c" "$sha_u" "$cert_bytes" \
-    "$name" "$eps" "$prec" "$tool" "$check" >> "$MANIFEST"
+    "$name" "$eps" "$prec" "$tool" "$check" > "$rd/manifest.line"
   { echo "archive=$afile"; echo "archive_bytes=$(stat -c %s "$TMP/archive/$afile")"; echo "cert_sha256=$sha_u"; } >> "$rec"
   rm -f "$cert"
-  if [ $FAIL_FAST -eq 1 ] && [ ${#FAILURES[@]} -gt 0 ]; then
-    log "run_all.sh: --fail-fast: stopping; nothing written"; exit 1
-  fi
+}
+
+ORDER=$(for key in "${SOLVED[@]}"; do echo "$(stat -c %s "$TMP/runs/$key/aspects.cert") $key"; done | sort -n | cut -d' ' -f2)
+for key in $ORDER; do
+  while [ "$(jobs -rp | wc -l)" -ge "$CHECK_JOBS" ]; do wait -n || true; done
+  if [ $FAIL_FAST -eq 1 ] && ls "$TMP"/runs/*/failure.txt > /dev/null 2>&1; then break; fi
+  check_one "$key" &
+  CHECK_PIDS+=($!)
 done
+for p in "${CHECK_PIDS[@]}"; do wait "$p" || true; done
+CHECK_PIDS=()
+for key in "${SOLVED[@]}"; do
+  rd="$TMP/runs/$key"
+  [ ! -f "$rd/manifest.line" ] || cat "$rd/manifest.line" >> "$MANIFEST"
+  [ ! -f "$rd/failure.txt" ] || FAILURES+=("$(cat "$rd/failure.txt")")
+  rm -f "$rd/manifest.line" "$rd/failure.txt"
+done
+if [ $FAIL_FAST -eq 1 ] && [ ${#FAILURES[@]} -gt 0 ]; then
+  log "run_all.sh: --fail-fast: stopping; nothing written"; exit 1
+fi
 
 # ------------------------------------------------------------------ figures and table
 FIG_DIRS=()

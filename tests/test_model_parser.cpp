@@ -126,7 +126,8 @@ TEST_F(ParserTest, BisectStatement) {
   }
   EXPECT_EQ(parse_model(H + "equation x - q = 0\n", "b.robot").bisect, "");
   EXPECT_EQ(load_model(robots("3rpr.robot")).bisect, "pose-first");
-  EXPECT_EQ(load_model(robots("rrrrr.robot")).bisect, "");
+  EXPECT_EQ(load_model(robots("rrrrr.robot")).bisect, "verdict");
+  EXPECT_EQ(load_model(robots("prrp.robot")).bisect, "");
 }
 
 TEST_F(ParserTest, ThreeRrrStar) {
@@ -150,6 +151,7 @@ TEST_F(ParserTest, EmbeddedDefaultIsTheRrrrrFile) {
   EXPECT_EQ(d.name, f.name);
   EXPECT_EQ(d.var_names(), f.var_names());
   EXPECT_EQ(d.equation_text, f.equation_text);
+  EXPECT_EQ(d.bisect, f.bisect);
   for (size_t j = 0; j < d.vars.size(); ++j) {
     EXPECT_TRUE(mpfr_equal_p(&d.vars[j].domain.get()->left, &f.vars[j].domain.get()->left));
     EXPECT_TRUE(mpfr_equal_p(&d.vars[j].domain.get()->right, &f.vars[j].domain.get()->right));
