@@ -10,8 +10,8 @@
 #include <set>
 #include <sstream>
 
-#include "eval.h"
 #include "bisector.h"
+#include "eval.h"
 #include "exact_period.h"
 #include "model.h"
 

@@ -81,7 +81,7 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
     }
   }
   struct Item {
-    double lo, hi, elo, ehi;  // on d (shifted by 2πk) and on e (the whole line without e)
+    double lo, hi, elo, ehi;  // on d (shifted by 2πk), and on e (all of R if there is none)
     int id, k;
   };
   std::vector<Item> items;

@@ -162,8 +162,11 @@ class Parser {
       if (peek().kind != Tok::Ident && peek().kind != Tok::Number)
         bad(peek(), "expected the robot's name");
       while (peek().kind != Tok::Newline) m_.name += t_[p_++].text;  // e.g. 3-RRR*
-    } else if (k == "bisect") {
-      while (peek().kind != Tok::Newline) ++p_;  // the search's choice: nothing to check
+    } else if (k == "bisect") {  // the search's choice: checked for its name only
+      std::string name;
+      while (peek().kind != Tok::Newline) name += t_[p_++].text;  // pose-first: 3 tokens
+      if (name != "round-robin" && name != "pose-first" && name != "verdict")
+        bad(kw, "unknown bisector '" + name + "'");
     } else if (k == "constant" || k == "let") {
       std::string name = new_name();
       expect("=");
