@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <functional>
@@ -231,8 +230,7 @@ int run_solve(const SolveOptions& opts) {
 
   // The model's `bisect` statement chooses unless --bisect is given (a resumed run has the
   // one its checkpoint names).
-  const bool bisect_given = std::count(o.given.begin(), o.given.end(), "--bisect") > 0;
-  if (!resumed && !bisect_given && !model.bisect.empty()) o.bisect = model.bisect;
+  if (!resumed && !o.was_given("--bisect") && !model.bisect.empty()) o.bisect = model.bisect;
 
   AspectsConfig cfg;
   cfg.eps = o.eps;

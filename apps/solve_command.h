@@ -1,6 +1,7 @@
 // `aspects solve`: run the engine on a model and write its outputs.
 #pragma once
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,6 +31,9 @@ struct SolveOptions {
   double checkpoint = -1;
   std::string resume_dir;
   std::vector<std::string> given;  // the options given on the command line ("--eps", "MODEL")
+  bool was_given(const char* name) const {
+    return std::find(given.begin(), given.end(), name) != given.end();
+  }
 };
 
 // Exit status of a run stopped by a limit or a signal (its outputs are a partial result).

@@ -2,7 +2,6 @@
 
 #include <signal.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstdio>
@@ -14,10 +13,6 @@ namespace aspects {
 
 namespace {
 
-bool given(const SolveOptions& o, const char* name) {
-  return std::find(o.given.begin(), o.given.end(), name) != o.given.end();
-}
-
 std::string show(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
@@ -27,7 +22,7 @@ std::string show(double x) {
 template <class T>
 void adopt(const SolveOptions& o, const char* name, T& value, const T& saved,
            const std::string& value_text, const std::string& saved_text) {
-  if (given(o, name) && !(value == saved))
+  if (o.was_given(name) && !(value == saved))
     throw CheckpointError("--resume: " + std::string(name) + " " + value_text +
                           " differs from the checkpoint's " + saved_text +
                           " (give the same value, or leave the option out)");
@@ -51,12 +46,12 @@ void adopt_checkpoint(SolveOptions& o, const CheckpointHeader& h) {
   adopt(o, "--all-links", o.all_links, all_links, flag(o.all_links), flag(all_links));
   adopt(o, "--no-cert", o.no_cert, no_cert, flag(o.no_cert), flag(no_cert));
   namespace fs = std::filesystem;
-  if (given(o, "--out") && fs::weakly_canonical(o.out_dir) != fs::weakly_canonical(o.resume_dir))
+  if (o.was_given("--out") && fs::weakly_canonical(o.out_dir) != fs::weakly_canonical(o.resume_dir))
     throw UsageError("--out " + o.out_dir + " differs from --resume " + o.resume_dir +
                      " (a resumed run writes where it was stopped)");
   o.out_dir = o.resume_dir;
-  if (!given(o, "--checkpoint")) o.checkpoint = h.checkpoint_seconds;
-  if (!given(o, "MODEL")) o.model_path = h.model_file;
+  if (!o.was_given("--checkpoint")) o.checkpoint = h.checkpoint_seconds;
+  if (!o.was_given("MODEL")) o.model_path = h.model_file;
 }
 
 int remove_stale_temporaries(const std::string& dir) {
@@ -81,7 +76,7 @@ int remove_stale_temporaries(const std::string& dir) {
 }
 
 Model resumed_model(const SolveOptions& o, const CheckpointHeader& h) {
-  if (!given(o, "MODEL"))
+  if (!o.was_given("MODEL"))
     return parse_model(h.model_text, h.model_file.empty() ? "(embedded RRRRR)" : h.model_file);
   Model m = load_model(o.model_path);
   if (sha256_hex(m.source) != h.model_sha256)

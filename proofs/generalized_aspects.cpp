@@ -553,5 +553,4 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   return out;
 }
 
-
 }  // namespace aspects
