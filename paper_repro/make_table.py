@@ -116,10 +116,20 @@ def collect(outdir, key):
     return r
 
 
+# Statuses of a run that solved: its numbers are shown whatever became of the check.
+SOLVED = ("ok", "check_failed", "check_timeout", "check_killed")
+
+
 def ours_cell(r, field, fmt=fmt_num):
-    if r["status"] in ("ok", "check_failed", "check_timeout"):
+    if r["status"] in SOLVED:
         return fmt(r.get(field))
     return "—"
+
+
+def check_cell(check, wall):
+    """'VERIFIED in 9.7 s', 'REJECTED after 3 s', 'NOT CHECKED after 600 s'."""
+    word = check.split(" (")[0]
+    return f"{word} {'in' if word == 'VERIFIED' else 'after'} {fmt_time(wall)} s"
 
 
 def status_cell(r):
@@ -136,7 +146,7 @@ def status_cell(r):
         return "**FAILED**: " + r["message"]
     if s == "check_failed":
         return "**CERTIFICATE REJECTED**"
-    if s == "check_timeout":
+    if s in ("check_timeout", "check_killed"):
         return r["message"]
     return s
 
@@ -162,7 +172,7 @@ def main():
         w.writerow(cols)
         for r in rows:
             p = PAPER[r["key"]]
-            has = r["status"] in ("ok", "check_failed", "check_timeout")
+            has = r["status"] in SOLVED
             g = (lambda k: r.get(k)) if has else (lambda k: None)
             w.writerow([
                 r["key"], r["name"], r["status"], r["message"],
@@ -189,7 +199,7 @@ def main():
     lines.append("")
     same, coarser = [], []
     for r in rows:
-        if r["status"] not in ("ok", "check_failed", "check_timeout") or not r["eps"]:
+        if r["status"] not in SOLVED or not r["eps"]:
             continue
         pe = PAPER[r["key"]]["eps"]
         if r["key"] in PAPER_FIG:
@@ -197,7 +207,7 @@ def main():
         (same if abs(float(r["eps"]) - pe) <= 1e-12 else coarser).append(
             r["name"] if abs(float(r["eps"]) - pe) <= 1e-12 else f"{r['name']} (ε = {r['eps']} vs {pe:g})")
     cons = [r for r in rows if r["key"] in PAPER_FIG
-            and r["status"] in ("ok", "check_failed", "check_timeout")]
+            and r["status"] in SOLVED]
     if same or coarser or cons:
         parts = []
         if same:
@@ -241,8 +251,7 @@ def main():
     row("time (s) — paper", [fmt_num(PAPER[r["key"]]["time"]) for r in rows])
     row("time (s) — ours (solve, as reported)", [ours_cell(r, "time", fmt_time) for r in rows])
     row("check_cert", [
-        (f"{r['check'].split(' ')[0]} in {fmt_time(r['check_wall'])} s" if r.get("check") else "—")
-        for r in rows])
+        check_cell(r["check"], r["check_wall"]) if r.get("check") else "—" for r in rows])
     row("certificate (raw / archived)", [
         (f"{human_bytes(r['cert_bytes'])} / {human_bytes(r['archive_bytes'])}"
          if r.get("cert_bytes") and r.get("archive_bytes") else "—") for r in rows])

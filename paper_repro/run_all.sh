@@ -294,6 +294,13 @@ check_one() {
     check="NOT CHECKED (check_cert did not finish within $TIMEOUT s)"
     log "[$i/$N] $name: $check"
     { echo "status=check_timeout"; echo "message=$check"; } >> "$rec"
+  elif [ $crc -gt 128 ]; then
+    # Killed by a signal (by hand, or the OOM killer): nothing was decided, but the run
+    # still fails, since the certificate is not checked.
+    check="NOT CHECKED (check_cert killed by signal $((crc - 128)))"
+    log "[$i/$N] $name: ERROR: $check"
+    { echo "status=check_killed"; echo "message=$check"; } >> "$rec"
+    echo "$name: $check" > "$rd/failure.txt"
   else
     check="REJECTED (check_cert exit $crc)"
     msg="check_cert rejected the certificate (exit $crc): ${check_line:-$(tail -n 2 "$rd/check.log" | tr '\n' ' ')}"
