@@ -83,4 +83,15 @@ double resident_bytes() {
   return k == 2 ? double(rss) * double(sysconf(_SC_PAGESIZE)) : 0;
 }
 
+double peak_resident_bytes() {
+  FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return 0;
+  char line[256];
+  double kib = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::sscanf(line, "VmHWM: %lf kB", &kib) == 1) break;
+  std::fclose(f);
+  return kib * 1024;
+}
+
 }  // namespace aspects

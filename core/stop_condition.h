@@ -51,5 +51,8 @@ class StopCondition {
 void watch_stop_signals();
 // Resident memory of this process, in bytes (0 when /proc is unavailable).
 double resident_bytes();
+// The largest resident memory of this process so far (VmHWM), in bytes (0 when /proc is
+// unavailable).
+double peak_resident_bytes();
 
 }  // namespace aspects

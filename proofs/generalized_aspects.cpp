@@ -22,6 +22,7 @@
 #include "determinant_factors.h"
 #include "model_eval.h"
 #include "search_state.h"
+#include "stop_condition.h"
 
 namespace aspects {
 
@@ -357,17 +358,19 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   bool all_done = st.top_done;
   for (uint8_t d : st.done) all_done = all_done && d;
   if (!all_done) checkpoint(true);  // stopped: what a resumed run needs
+  auto lap = [&, last = t0](const char* phase) mutable {
+    auto now = std::chrono::steady_clock::now();
+    out.phase_seconds.emplace_back(phase, std::chrono::duration<double>(now - last).count());
+    out.phase_peak_mib.emplace_back(phase, peak_resident_bytes() / (1024.0 * 1024.0));
+    last = now;
+  };
+  lap("search");
   for (auto& part : st.parts) part.next_leaf = 0;
   PartMerger(st.parts, out).merge(st.top);
   out.diagnostics.add(st.top.out.diagnostics);
   for (const auto& part : st.parts) out.diagnostics.add(part.out.diagnostics);
   st = SearchState();  // merged into `out`: a resumed state is consumed
-  auto lap = [&, last = t0](const char* phase) mutable {
-    auto now = std::chrono::steady_clock::now();
-    out.phase_seconds.emplace_back(phase, std::chrono::duration<double>(now - last).count());
-    last = now;
-  };
-  lap("search");
+  lap("merge");
   // Counted on the merged tree, not by `stats`: a resumed run did not process every node.
   for (const SearchNode& node : out.tree) {
     if (node.split_var >= 0) {

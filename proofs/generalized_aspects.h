@@ -102,6 +102,9 @@ struct AspectsResult {
   bool complete() const { return stopped_by == StopReason::None; }
   double seconds = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;  // wall time per phase
+  // The process's peak resident memory at the end of each phase (MiB): which phase
+  // raised the peak.
+  std::vector<std::pair<std::string, double>> phase_peak_mib;
 };
 
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config);

@@ -26,6 +26,13 @@ for k in ["count", "filtered", "separated_lower_bound", "sizes"]:
     assert k in s["csncs"], k
 assert s["robot"] == "PRRP" and s["csncs"]["filtered"] == 4 and s["csncs"]["separated_lower_bound"] == 4
 assert s["factors"][0]["origin"] == "det Fx", s["factors"]
+# Phases: each with its time and the peak memory at its end, which only grows, up to the
+# run's peak; the outputs come last.
+names = [ph["name"] for ph in s["phases"]]
+assert names[0] == "search" and names[-1] == "outputs" and sorted(names) == sorted(s["phase_seconds"]), s
+assert all(ph["seconds"] == s["phase_seconds"][ph["name"]] for ph in s["phases"]), s
+peaks = [ph["peak_memory_mib"] for ph in s["phases"]]
+assert 0 < peaks[0] and peaks == sorted(peaks) and peaks[-1] <= s["peak_memory_mib"], s
 # PRRP has one command per pose and one pose per command in each aspect: no witness.
 c = s["cuspidal"]
 assert (c["witnesses"], c["assembly_witnesses"], c["csncs_assembly_search_capped"]) == (0, 0, 0), c
