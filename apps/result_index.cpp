@@ -91,8 +91,11 @@ std::vector<double> recompute_witness(const Model& m, const BoxStore& R, const N
 
 }  // namespace
 
-ResultIndex build_result_index(const Model& model, const AspectsResult& r, long precision_bits,
-                               double tau, double eps, const std::string& model_file) {
+namespace {
+
+// Everything of the index of `r` but its three lists.
+ResultIndex index_header(const Model& model, const AspectsResult& r, long precision_bits,
+                         double tau, double eps, const std::string& model_file) {
   ResultIndex idx;
   idx.model_file = model_file;
   idx.model_source = model.source;
@@ -104,35 +107,65 @@ ResultIndex build_result_index(const Model& model, const AspectsResult& r, long 
   for (const auto& f : r.factors) idx.factors.push_back({f.origin, f.text});
   idx.csnc_count = uint32_t(r.csnc_sizes.size());
   idx.filtered = uint32_t(r.filtered);
+  return idx;
+}
+
+// Where the records of an index go, in file order: into a ResultIndex
+// (build_result_index) or straight to the file (write_result_index). The records are
+// built one at a time in the same temporaries: held whole, they took more memory than
+// the search's boxes (three small vectors per box).
+class RecordSink {
+ public:
+  virtual ~RecordSink() = default;
+  virtual void begin_solutions(uint32_t count) = 0;
+  virtual void solution(const IndexSolutionBox& s) = 0;
+  virtual void begin_undecided(uint32_t count) = 0;
+  virtual void undecided(const IndexUndecidedBox& u) = 0;
+  virtual void begin_links(uint32_t count) = 0;
+  virtual void link(const IndexLink& l) = 0;
+};
+
+void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) {
   const size_t p = r.factors.size();
+  uint32_t solutions = 0;
+  for (int b = 0; b < r.boxes.size(); ++b) solutions += r.certified[b] != 0;
+  // Each box's place among the solution boxes, for the links.
   std::vector<int32_t> solution_index(r.boxes.size(), -1);
-  for (int b = 0; b < r.boxes.size(); ++b) {
-    if (r.certified[b]) {
-      IndexSolutionBox s;
-      s.id = uint32_t(b);
-      s.csnc = r.csnc[b];
-      for (int v = 0; v < r.boxes.nv(); ++v) {
-        s.lo.push_back(r.boxes.lo(b, v));
-        s.hi.push_back(r.boxes.hi(b, v));
-      }
-      s.signs.assign(r.signs.begin() + ptrdiff_t(b * p), r.signs.begin() + ptrdiff_t((b + 1) * p));
-      solution_index[b] = int32_t(idx.solutions.size());
-      idx.solutions.push_back(std::move(s));
-    } else {
-      IndexUndecidedBox u;
-      u.id = uint32_t(b);
-      u.kind = uint8_t(r.undecided_kind[b]);
-      for (int v : model.pose) {
-        u.lo.push_back(r.boxes.lo(b, v));
-        u.hi.push_back(r.boxes.hi(b, v));
-      }
-      idx.undecided.push_back(std::move(u));
+  IndexSolutionBox s;
+  sink.begin_solutions(solutions);
+  for (int b = 0, k = 0; b < r.boxes.size(); ++b) {
+    if (!r.certified[b]) continue;
+    s.id = uint32_t(b);
+    s.csnc = r.csnc[b];
+    s.lo.clear();
+    s.hi.clear();
+    for (int v = 0; v < r.boxes.nv(); ++v) {
+      s.lo.push_back(r.boxes.lo(b, v));
+      s.hi.push_back(r.boxes.hi(b, v));
     }
+    s.signs.assign(r.signs.begin() + ptrdiff_t(b * p), r.signs.begin() + ptrdiff_t((b + 1) * p));
+    solution_index[b] = k++;
+    sink.solution(s);
+  }
+  IndexUndecidedBox u;
+  sink.begin_undecided(uint32_t(r.boxes.size()) - solutions);
+  for (int b = 0; b < r.boxes.size(); ++b) {
+    if (r.certified[b]) continue;
+    u.id = uint32_t(b);
+    u.kind = uint8_t(r.undecided_kind[b]);
+    u.lo.clear();
+    u.hi.clear();
+    for (int v : model.pose) {
+      u.lo.push_back(r.boxes.lo(b, v));
+      u.hi.push_back(r.boxes.hi(b, v));
+    }
+    sink.undecided(u);
   }
   const bool kept = r.link_proofs.size() == r.certified_links.size();
+  IndexLink l;
+  sink.begin_links(uint32_t(r.certified_links.size()));
   for (size_t i = 0; i < r.certified_links.size(); ++i) {
     const NeighborPair& pair = r.neighbors[r.certified_links[i]];
-    IndexLink l;
     l.a = uint32_t(solution_index[pair.a]);
     l.b = uint32_t(solution_index[pair.b]);
     l.shift_code = pair.shift_code;
@@ -140,14 +173,37 @@ ResultIndex build_result_index(const Model& model, const AspectsResult& r, long 
       l.witness.assign(r.link_proofs.witness(i), r.link_proofs.witness(i) + model.n());
     else
       l.witness = recompute_witness(model, r.boxes, pair);
-    idx.links.push_back(std::move(l));
+    sink.link(l);
   }
+}
+
+class CollectRecords : public RecordSink {
+ public:
+  explicit CollectRecords(ResultIndex& idx) : idx_(idx) {}
+  void begin_solutions(uint32_t count) override { idx_.solutions.reserve(count); }
+  void solution(const IndexSolutionBox& s) override { idx_.solutions.push_back(s); }
+  void begin_undecided(uint32_t count) override { idx_.undecided.reserve(count); }
+  void undecided(const IndexUndecidedBox& u) override { idx_.undecided.push_back(u); }
+  void begin_links(uint32_t count) override { idx_.links.reserve(count); }
+  void link(const IndexLink& l) override { idx_.links.push_back(l); }
+
+ private:
+  ResultIndex& idx_;
+};
+
+}  // namespace
+
+ResultIndex build_result_index(const Model& model, const AspectsResult& r, long precision_bits,
+                               double tau, double eps, const std::string& model_file) {
+  ResultIndex idx = index_header(model, r, precision_bits, tau, eps, model_file);
+  CollectRecords collect(idx);
+  emit_records(model, r, collect);
   return idx;
 }
 
 namespace {
 
-void encode(const ResultIndex& idx, Writer& w) {
+void encode_header(const ResultIndex& idx, Writer& w) {
   w.bytes(kMagic, std::strlen(kMagic));
   w.u32(kResultIndexVersion);
   w.u32(idx.nv);
@@ -164,34 +220,61 @@ void encode(const ResultIndex& idx, Writer& w) {
   }
   w.u32(idx.csnc_count);
   w.u32(idx.filtered);
-  w.u32(uint32_t(idx.solutions.size()));
-  for (const auto& s : idx.solutions) {
-    w.u32(s.id);
-    w.i32(s.csnc);
-    for (uint32_t v = 0; v < idx.nv; ++v) {
-      w.f64(s.lo[v]);
-      w.f64(s.hi[v]);
-    }
-    for (int8_t g : s.signs) w.u8(uint8_t(g));
-  }
-  w.u32(uint32_t(idx.undecided.size()));
-  for (const auto& u : idx.undecided) {
-    w.u32(u.id);
-    w.u8(u.kind);
-    for (uint32_t j = 0; j < idx.n; ++j) {
-      w.f64(u.lo[j]);
-      w.f64(u.hi[j]);
-    }
-  }
-  w.u32(uint32_t(idx.links.size()));
-  for (const auto& l : idx.links) {
-    w.u32(l.a);
-    w.u32(l.b);
-    w.u32(l.shift_code);
-    for (double x : l.witness) w.f64(x);
-  }
-  w.bytes(kTrailer, std::strlen(kTrailer));
 }
+
+void encode(const IndexSolutionBox& s, Writer& w) {
+  w.u32(s.id);
+  w.i32(s.csnc);
+  for (size_t v = 0; v < s.lo.size(); ++v) {
+    w.f64(s.lo[v]);
+    w.f64(s.hi[v]);
+  }
+  for (int8_t g : s.signs) w.u8(uint8_t(g));
+}
+
+void encode(const IndexUndecidedBox& u, Writer& w) {
+  w.u32(u.id);
+  w.u8(u.kind);
+  for (size_t j = 0; j < u.lo.size(); ++j) {
+    w.f64(u.lo[j]);
+    w.f64(u.hi[j]);
+  }
+}
+
+void encode(const IndexLink& l, Writer& w) {
+  w.u32(l.a);
+  w.u32(l.b);
+  w.u32(l.shift_code);
+  for (double x : l.witness) w.f64(x);
+}
+
+void encode_trailer(Writer& w) { w.bytes(kTrailer, std::strlen(kTrailer)); }
+
+void encode(const ResultIndex& idx, Writer& w) {
+  encode_header(idx, w);
+  w.u32(uint32_t(idx.solutions.size()));
+  for (const auto& s : idx.solutions) encode(s, w);
+  w.u32(uint32_t(idx.undecided.size()));
+  for (const auto& u : idx.undecided) encode(u, w);
+  w.u32(uint32_t(idx.links.size()));
+  for (const auto& l : idx.links) encode(l, w);
+  encode_trailer(w);
+}
+
+// The records encoded as they come: the file, never the index, is whole.
+class EncodeRecords : public RecordSink {
+ public:
+  explicit EncodeRecords(Writer& w) : w_(w) {}
+  void begin_solutions(uint32_t count) override { w_.u32(count); }
+  void solution(const IndexSolutionBox& s) override { encode(s, w_); }
+  void begin_undecided(uint32_t count) override { w_.u32(count); }
+  void undecided(const IndexUndecidedBox& u) override { encode(u, w_); }
+  void begin_links(uint32_t count) override { w_.u32(count); }
+  void link(const IndexLink& l) override { encode(l, w_); }
+
+ private:
+  Writer& w_;
+};
 
 }  // namespace
 
@@ -288,6 +371,19 @@ void write_result_index(const std::string& path, const ResultIndex& idx) {
   AtomicFile f(path);
   Writer w(&f);
   encode(idx, w);
+  w.flush();
+  f.commit();
+}
+
+void write_result_index(const std::string& path, const Model& model, const AspectsResult& r,
+                        long precision_bits, double tau, double eps,
+                        const std::string& model_file) {
+  AtomicFile f(path);
+  Writer w(&f);
+  encode_header(index_header(model, r, precision_bits, tau, eps, model_file), w);
+  EncodeRecords encode_records(w);
+  emit_records(model, r, encode_records);
+  encode_trailer(w);
   w.flush();
   f.commit();
 }

@@ -78,6 +78,11 @@ ResultIndex decode_result_index(const std::string& bytes, const std::string& wha
 
 // Atomic write (temporary name, then rename).
 void write_result_index(const std::string& path, const ResultIndex& idx);
+// The same bytes as write_result_index(path, build_result_index(...)), without holding the
+// index: the records are written as they are made.
+void write_result_index(const std::string& path, const Model& model, const AspectsResult& r,
+                        long precision_bits, double tau, double eps,
+                        const std::string& model_file);
 // Reads DIR/aspects.idx; IndexError when DIR or the file is missing or malformed.
 ResultIndex read_result_index(const std::string& result_dir);
 

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "generalized_aspects.h"
 #include "loaded_result.h"
@@ -239,6 +241,31 @@ TEST(ResultIndex, RecomputedWitnessesAreTheRecordedOnes) {
   ResultIndex b = build_result_index(m, without, 53, cfg.tau, cfg.eps, "x");
   ASSERT_EQ(a.links.size(), b.links.size());
   for (size_t i = 0; i < a.links.size(); ++i) EXPECT_EQ(a.links[i].witness, b.links[i].witness);
+}
+
+TEST(ResultIndex, StreamedIndexIsTheCollectedOneByteForByte) {
+  // `aspects solve` writes the index record by record; query and the tests build it whole.
+  // Both with and without link proofs (the witnesses kept or recomputed).
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  AspectsConfig cfg;
+  cfg.eps = 1;
+  AspectsResult with = compute_aspects(m, cfg);
+  AspectsResult without = with;
+  without.link_proofs = LinkRecords(m.n());
+  const std::string dir = ::testing::TempDir() + "streamed_index";
+  std::filesystem::create_directories(dir);
+  for (const AspectsResult* r : {&with, &without}) {
+    const std::string path = dir + "/" + kResultIndexName;
+    write_result_index(path, m, *r, 53, cfg.tau, cfg.eps, "x");
+    std::ifstream in(path, std::ios::binary);
+    const std::string streamed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const ResultIndex idx = build_result_index(m, *r, 53, cfg.tau, cfg.eps, "x");
+    ASSERT_GT(idx.solutions.size(), 100u);
+    ASSERT_GT(idx.undecided.size(), 100u);
+    ASSERT_GT(idx.links.size(), 10u);
+    EXPECT_EQ(streamed, encode_result_index(idx));
+  }
 }
 
 TEST(ResultIndex, EveryTruncationAndByteFlipIsRejectedOrReadNeverACrash) {
