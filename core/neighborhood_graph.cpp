@@ -13,13 +13,17 @@ uint32_t pack_shift(const std::vector<int>& k) {
 
 namespace {
 
-// Hull of the output boxes below each internal tree node: a reported box may leave its cell
+// Hull of the output boxes below internal tree nodes: a reported box may leave its cell
 // (the Newton iterate can shift), so the cells alone cannot guide the search. A filter
-// only, so in floats rounded outward, and none for leaves (their box is in R): on 3-RPR at
-// eps 0.3 the tree has 19 M nodes, and hulls in doubles for all of them took 1.8 GB.
+// only, so in floats rounded outward, and only for nodes above at least kMinBoxes output
+// boxes: below them the query tests the few boxes themselves. On 3-RPR at eps 0.3 the tree
+// has 22 M nodes; hulls in doubles for all of them took 1.8 GB.
 struct Hulls {
-  std::vector<int32_t> slot;  // per node: its hull's index, -1 for a leaf
-  std::vector<float> h;       // per internal node, lo and hi per variable
+  static constexpr int32_t kMinBoxes = 8;
+  const std::vector<SearchNode>& tree;
+  const BoxStore& R;
+  std::vector<int32_t> slot;  // per node: its hull's index, -1 for none (leaves included)
+  std::vector<float> h;       // per hull, lo and hi per variable
 
   static float down(double x) {
     float f = float(x);
@@ -30,34 +34,50 @@ struct Hulls {
     return f < x ? std::nextafter(f, INFINITY) : f;
   }
 
-  Hulls(const std::vector<SearchNode>& tree, const BoxStore& R) : slot(tree.size(), -1) {
+  Hulls(const std::vector<SearchNode>& t, const BoxStore& boxes)
+      : tree(t), R(boxes), slot(t.size(), 0) {
     const int nv = R.nv();
-    int32_t internal = 0;
-    for (size_t i = 0; i < tree.size(); ++i)
-      if (tree[i].split_var >= 0) slot[i] = internal++;
-    // [+inf, -inf] is the empty hull: it meets nothing and is the identity of the union.
-    h.resize(size_t(internal) * 2 * nv);
-    for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
-    // Children have larger ids than their parent: a reverse sweep is bottom-up.
+    // The output boxes below each node, bottom-up (children have larger ids than their
+    // parent), held in `slot` until the slots are numbered.
     for (size_t i = tree.size(); i-- > 0;) {
       const SearchNode& s = tree[i];
-      if (s.split_var < 0) continue;
-      float* hull = &h[size_t(slot[i]) * 2 * nv];
-      for (int c : {s.left, s.right}) {
-        const SearchNode& child = tree[c];
-        for (int v = 0; v < nv; ++v) {
-          float clo = INFINITY, chi = -INFINITY;
-          if (child.split_var >= 0) {
-            clo = h[(size_t(slot[c]) * nv + v) * 2];
-            chi = h[(size_t(slot[c]) * nv + v) * 2 + 1];
-          } else if (child.leaf >= 0) {
-            clo = down(R.lo(child.leaf, v));
-            chi = up(R.hi(child.leaf, v));
-          }
-          hull[2 * v] = std::min(hull[2 * v], clo);
-          hull[2 * v + 1] = std::max(hull[2 * v + 1], chi);
-        }
+      slot[i] = s.split_var >= 0 ? slot[s.left] + slot[s.right] : s.leaf >= 0;
+    }
+    int32_t hulls = 0;
+    for (size_t i = 0; i < tree.size(); ++i)
+      slot[i] = tree[i].split_var >= 0 && slot[i] >= kMinBoxes ? hulls++ : -1;
+    // [+inf, -inf] is the empty hull: it meets nothing and is the identity of the union.
+    h.resize(size_t(hulls) * 2 * nv);
+    for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
+    for (size_t i = tree.size(); i-- > 0;)
+      if (slot[i] >= 0) {
+        float* hull = &h[size_t(slot[i]) * 2 * nv];
+        unite(tree[i].left, hull);
+        unite(tree[i].right, hull);
       }
+  }
+
+  // hull ∪= the output boxes below `node` (whose hull, if it has one, is already made).
+  void unite(int32_t node, float* hull) const {
+    const SearchNode& s = tree[node];
+    const int nv = R.nv();
+    if (s.split_var >= 0 && slot[node] < 0) {
+      unite(s.left, hull);
+      unite(s.right, hull);
+      return;
+    }
+    if (s.split_var < 0 && s.leaf < 0) return;
+    for (int v = 0; v < nv; ++v) {
+      float lo, hi;
+      if (s.split_var >= 0) {
+        lo = h[(size_t(slot[node]) * nv + v) * 2];
+        hi = h[(size_t(slot[node]) * nv + v) * 2 + 1];
+      } else {
+        lo = down(R.lo(s.leaf, v));
+        hi = up(R.hi(s.leaf, v));
+      }
+      hull[2 * v] = std::min(hull[2 * v], lo);
+      hull[2 * v + 1] = std::max(hull[2 * v + 1], hi);
     }
   }
 };
@@ -104,9 +124,11 @@ struct Query {
         out->push_back({self, s.leaf, pack_shift(back)});
       return;
     }
-    const float* h = &hulls.h[size_t(hulls.slot[node]) * 2 * nv];
-    for (int v = 0; v < nv; ++v)
-      if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
+    if (hulls.slot[node] >= 0) {
+      const float* h = &hulls.h[size_t(hulls.slot[node]) * 2 * nv];
+      for (int v = 0; v < nv; ++v)
+        if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
+    }
     visit(s.left);
     visit(s.right);
   }
