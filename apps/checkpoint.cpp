@@ -88,12 +88,14 @@ class In : public LeReader {
 
 void write_part(Out& o, const SearchPart& part, uint32_t p) {
   o.u32(uint32_t(part.tree.size()));
+  // The node as the format has it since before nodes were packed: left and right child
+  // (-1 for a leaf), split variable, split point, leaf index (-1 for an internal node).
   for (const SearchNode& s : part.tree) {
-    o.i32(s.left);
-    o.i32(s.right);
+    o.i32(s.internal() ? s.left() : -1);
+    o.i32(s.internal() ? s.right() : -1);
     o.i32(s.split_var);
     o.f64(s.split);
-    o.i32(s.leaf);
+    o.i32(s.leaf());
     o.u8(uint8_t(s.fate));
     o.i32(s.reason);
   }
@@ -117,15 +119,23 @@ void read_part(In& in, SearchPart& part, const CheckpointHeader& h, uint32_t def
   const uint32_t nodes = in.count(29);
   part.tree.resize(nodes);
   for (SearchNode& s : part.tree) {
-    s.left = in.i32();
-    s.right = in.i32();
-    s.split_var = in.i32();
+    const int32_t left = in.i32(), right = in.i32(), var = in.i32();
     s.split = in.f64();
-    s.leaf = in.i32();
+    const int32_t leaf = in.i32();
     uint8_t fate = in.u8();
     if (fate > uint8_t(LeafFate::Unexplored)) in.fail("bad leaf fate");
     s.fate = LeafFate(fate);
-    s.reason = in.i32();
+    const int32_t reason = in.i32();
+    if (reason < -1 || reason > kMaxPruneReason) in.fail("bad prune reason");
+    s.reason = int16_t(reason);
+    if (var >= 0) {
+      // Children adjacent and in range, the variable the model's.
+      if (var >= int32_t(h.nv) || left <= 0 || right != left + 1 || right >= int32_t(nodes))
+        in.fail("bad tree node");
+      s.set_children(var, s.split, left);
+    } else {
+      s.index = leaf;
+    }
   }
   AspectsResult& r = part.out;
   const uint32_t boxes = in.count(16 * uint64_t(h.nv) + 2 + h.p);
@@ -149,13 +159,10 @@ void read_part(In& in, SearchPart& part, const CheckpointHeader& h, uint32_t def
   for (long* x : {&d.refuted_by_equation, &d.refuted_by_newton, &d.refuted_by_constraint})
     *x = long(in.u64());
   for (const SearchNode& s : part.tree) {
-    if (s.split_var >= 0) {
-      if (s.split_var >= int32_t(h.nv) || s.left <= 0 || s.right <= 0 ||
-          s.left >= int32_t(nodes) || s.right >= int32_t(nodes))
-        in.fail("bad tree node");
-    } else if (s.fate == LeafFate::Deferred) {
-      if (s.leaf < 0 || uint32_t(s.leaf) >= deferred) in.fail("bad deferred subtree");
-    } else if (s.leaf >= int32_t(boxes)) {
+    if (s.internal()) continue;
+    if (s.fate == LeafFate::Deferred) {
+      if (s.index < 0 || uint32_t(s.index) >= deferred) in.fail("bad deferred subtree");
+    } else if (s.index >= int32_t(boxes)) {
       in.fail("bad output box");
     }
   }
@@ -286,7 +293,7 @@ Checkpoint read_checkpoint(const std::string& path) {
       c.records[k] = in.str();
     }
     for (const SearchNode& s : st.top.tree)
-      if (s.fate == LeafFate::Deferred && s.split_var < 0 && uint32_t(s.leaf) >= D)
+      if (s.fate == LeafFate::Deferred && !s.internal() && uint32_t(s.index) >= D)
         in.fail("bad deferred subtree");
   }
   if (!in.at_end()) in.fail("trailing bytes");

@@ -1,5 +1,6 @@
 #include "branch_and_prune.h"
 
+#include <stdexcept>
 #include <utility>
 
 namespace aspects {
@@ -38,14 +39,14 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     SearchNode& node = tree[it.node];
     if (it.depth == defer_depth) {
       node.fate = LeafFate::Deferred;
-      node.leaf = int32_t(deferred->size());
-      steps.deferred(node.leaf);
+      node.index = int32_t(deferred->size());
+      steps.deferred(node.index);
       deferred->push_back({std::move(it.box), it.parent_split, it.node});
       continue;
     }
     if (stop && !stop->admit(stats.solutions + stats.undecided)) {
       node.fate = LeafFate::Unexplored;
-      node.leaf = steps.keep_unexplored(it.box);
+      node.index = steps.keep_unexplored(it.box);
       complete = false;
       continue;
     }
@@ -57,7 +58,8 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     if (!steps.prune(it.box, reason)) {
       stats.add_decided(cell_share);
       node.fate = LeafFate::Discarded;
-      node.reason = reason;
+      if (reason > kMaxPruneReason) throw std::length_error("prune reason out of range");
+      node.reason = int16_t(reason);
       ++stats.discarded;
       continue;
     }
@@ -65,7 +67,7 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     Verdict verdict = steps.prove(it.box, index);
     if (verdict == Verdict::Solution) {
       node.fate = LeafFate::Solution;
-      node.leaf = index;
+      node.index = index;
       ++stats.solutions;
       stats.add_decided(cell_share);
       continue;
@@ -73,7 +75,7 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     SplitChoice split = steps.choose_split(it.box, {it.parent_split, verdict});
     if (split.var < 0) {
       node.fate = LeafFate::Undecided;
-      node.leaf = steps.keep_undecided(it.box, verdict);
+      node.index = steps.keep_undecided(it.box, verdict);
       ++stats.undecided;
       stats.add_decided(cell_share);
       continue;
@@ -83,10 +85,7 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     double p = split.at;
     steps.branched(var, p);
     int32_t left = int32_t(tree.size()), right = left + 1;
-    node.split_var = var;
-    node.split = p;
-    node.left = left;
-    node.right = right;  // `node` may dangle after emplace_back: not used below
+    node.set_children(var, p, left);  // `node` may dangle after emplace_back: not used below
     tree.emplace_back();
     tree.emplace_back();
     Box hi = it.box;

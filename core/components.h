@@ -1,5 +1,6 @@
 // Paper 4.4.1: CSNCs are the connected components of the certified graph (S, N),
-// computed with Boost.Graph; then the filtering heuristic.
+// computed with Boost's disjoint sets (Boost.Graph's union-find); then the filtering
+// heuristic.
 #pragma once
 
 #include <cstdint>

@@ -513,6 +513,10 @@ class Parser {
       fail(end, "the system is not square: " + std::to_string(np) + " pose variable(s), " +
                     std::to_string(nc) + " command variable(s), " + std::to_string(ne) +
                     " equation(s); they must be equal");
+    // A neighbour pair packs one shift per variable in 2 bits of 32.
+    if (np + nc > 16)
+      fail(end, "the model has " + std::to_string(np + nc) +
+                    " variables; at most 16 are supported");
     check_periodic_use();
     for (int e : m_.equations) {
       for (int j : m_.pose) m_.fx.push_back(m_.dag.derivative(e, j));

@@ -173,8 +173,8 @@ class AspectsSearch : public BranchAndPruneSteps {
 
 namespace {
 
-// Rebuilds one tree from the top part and the subtrees, in depth-first preorder, and
-// numbers the output boxes in that order (the order of the certificate's records).
+// Rebuilds one tree from the top part and the subtrees, depth first, and numbers the
+// output boxes in that order (the order of the certificate's records).
 class PartMerger {
  public:
   PartMerger(std::vector<SearchPart>& parts, AspectsResult& out)
@@ -193,31 +193,34 @@ class PartMerger {
     out_.certified.reserve(boxes);
     out_.undecided_kind.reserve(boxes);
     out_.signs.reserve(boxes * p_);
-    graft(top, 0);
+    out_.tree.emplace_back();
+    graft(top, 0, 0);
     release(top);
   }
 
  private:
-  int32_t graft(SearchPart& part, int32_t i) {
+  // Node i of `part` and the tree below it into out_.tree[id]; the children of an internal
+  // node take two adjacent new slots, as in the search.
+  void graft(SearchPart& part, int32_t i, int32_t id) {
     const SearchNode src = part.tree[i];
-    if (src.fate == LeafFate::Deferred && src.split_var < 0) {
-      SearchPart& sub = parts_[src.leaf];
-      const int32_t id = graft(sub, 0);
+    if (src.fate == LeafFate::Deferred && !src.internal()) {
+      SearchPart& sub = parts_[src.index];
+      graft(sub, 0, id);
       release(sub);  // each part is grafted once, whole
-      return id;
+      return;
     }
-    int32_t id = int32_t(out_.tree.size());
-    out_.tree.push_back(src);
-    if (src.split_var >= 0) {
-      int32_t l = graft(part, src.left);
-      int32_t r = graft(part, src.right);
-      out_.tree[id].left = l;
-      out_.tree[id].right = r;
-    } else if (src.leaf >= 0) {
-      if (src.leaf != part.next_leaf++) throw std::logic_error("merge: leaves out of order");
-      out_.tree[id].leaf = take_box(part.out, src.leaf);
+    out_.tree[id] = src;
+    if (src.internal()) {
+      const int32_t first = int32_t(out_.tree.size());
+      out_.tree.emplace_back();
+      out_.tree.emplace_back();
+      out_.tree[id].index = first;
+      graft(part, src.left(), first);
+      graft(part, src.right(), first + 1);
+    } else if (src.index >= 0) {
+      if (src.index != part.next_leaf++) throw std::logic_error("merge: leaves out of order");
+      out_.tree[id].index = take_box(part.out, src.index);
     }
-    return id;
   }
 
   int32_t take_box(const AspectsResult& from, int32_t b) {
@@ -373,7 +376,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   lap("merge");
   // Counted on the merged tree, not by `stats`: a resumed run did not process every node.
   for (const SearchNode& node : out.tree) {
-    if (node.split_var >= 0) {
+    if (node.internal()) {
       ++out.processed;
       continue;
     }
@@ -409,8 +412,10 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // The components joined so far (Boost's disjoint sets over the boxes), changed only
   // between rounds; during a round the blocks read `parent` without path compression.
   const int joinable = config.all_links ? 0 : out.boxes.size();
-  std::vector<int> rank(joinable), parent(joinable);
-  boost::disjoint_sets<int*, int*> joined(rank.data(), parent.data());
+  // Ranks stay below log2 of the box count: a byte each.
+  std::vector<uint8_t> rank(joinable);
+  std::vector<int> parent(joinable);
+  boost::disjoint_sets<uint8_t*, int*> joined(rank.data(), parent.data());
   for (int b = 0; b < joinable; ++b) joined.make_set(b);
   auto joined_root = [&](int32_t x) {
     while (parent[x] != x) x = parent[x];

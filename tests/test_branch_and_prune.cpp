@@ -59,10 +59,10 @@ bool node_cells(const std::vector<SearchNode>& tree, const Cell& root, std::vect
       why = "split outside its cell at node " + std::to_string(i);
       return false;
     }
-    cells[s.left] = cells[i];
-    cells[s.left][s.split_var].second = s.split;
-    cells[s.right] = cells[i];
-    cells[s.right][s.split_var].first = s.split;
+    cells[s.left()] = cells[i];
+    cells[s.left()][s.split_var].second = s.split;
+    cells[s.right()] = cells[i];
+    cells[s.right()][s.split_var].first = s.split;
   }
   return true;
 }
@@ -209,8 +209,8 @@ TEST(BranchAndPrune, PartitionsTheRoot) {
   EXPECT_TRUE(partitions(leaves, kRoot));
   // Every output box lies in its leaf's cell.
   for (size_t i = 0; i < tree.size(); ++i)
-    if (tree[i].leaf >= 0) {
-      EXPECT_TRUE(inside(steps.leaves[tree[i].leaf], cells[i])) << i;
+    if (tree[i].leaf() >= 0) {
+      EXPECT_TRUE(inside(steps.leaves[tree[i].leaf()], cells[i])) << i;
     }
 }
 
@@ -228,8 +228,8 @@ TEST(BranchAndPrune, HalvesAreTheBisectedBoxCutAtTheSplit) {
     stack.pop_back();
     preorder.push_back(i);
     if (tree[i].split_var >= 0) {
-      stack.push_back(tree[i].right);
-      stack.push_back(tree[i].left);
+      stack.push_back(tree[i].right());
+      stack.push_back(tree[i].left());
     }
   }
   ASSERT_EQ(preorder.size(), steps.pruned.size());
@@ -241,7 +241,7 @@ TEST(BranchAndPrune, HalvesAreTheBisectedBoxCutAtTheSplit) {
     EXPECT_TRUE(inside(at[i]->in, cells[i])) << i;
     const SearchNode& s = tree[i];
     if (s.split_var < 0) continue;
-    const Box &parent = at[i]->out, &l = at[s.left]->in, &r = at[s.right]->in;
+    const Box &parent = at[i]->out, &l = at[s.left()]->in, &r = at[s.right()]->in;
     for (int v = 0; v < 2; ++v) {
       double lo = parent[v].lo_down(), hi = parent[v].hi_up();
       if (v == s.split_var) {
@@ -317,7 +317,7 @@ TEST(BranchAndPrune, MergedTreePartitionsTheRootForAnyThreadsAndDepth) {
         EXPECT_EQ(r.tree[i].split_var, first[i].split_var) << i;
         EXPECT_EQ(r.tree[i].split, first[i].split) << i;
         EXPECT_EQ(int(r.tree[i].fate), int(first[i].fate)) << i;
-        EXPECT_EQ(r.tree[i].leaf, first[i].leaf) << i;
+        EXPECT_EQ(r.tree[i].leaf(), first[i].leaf()) << i;
       }
     }
 }
@@ -350,7 +350,7 @@ TEST(BranchAndPrune, StoppedSearchKeepsTheUnexploredCells) {
       discarded += s.split_var < 0 && s.fate == LeafFate::Discarded;
       if (s.fate == LeafFate::Unexplored) {
         ++unexplored;
-        EXPECT_GE(s.leaf, 0);
+        EXPECT_GE(s.leaf(), 0);
         EXPECT_EQ(s.split_var, -1);
       }
     }
@@ -405,7 +405,7 @@ TEST(BranchAndPrune, StoppedEngineRunIsASoundPartialResult) {
       for (const auto& s : r.tree) {
         unexplored += s.fate == LeafFate::Unexplored;
         discarded += s.split_var < 0 && s.fate == LeafFate::Discarded;
-        leaves += s.leaf >= 0;
+        leaves += s.leaf() >= 0;
       }
       EXPECT_EQ(unexplored, r.unexplored);
       EXPECT_EQ(discarded, r.discarded);  // no cell silently dropped

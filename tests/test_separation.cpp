@@ -49,16 +49,13 @@ std::pair<int32_t, int32_t> split(std::vector<SearchNode>& tree, int32_t i, int 
   int32_t l = int32_t(tree.size());
   tree.emplace_back();
   tree.emplace_back();
-  tree[i].split_var = v;
-  tree[i].split = at;
-  tree[i].left = l;
-  tree[i].right = l + 1;
+  tree[i].set_children(v, at, l);
   return {l, l + 1};
 }
 
 // Makes leaf `node` (cell `cell`) an output box with the given signs.
 void leaf(BoxSet& s, int32_t node, const Box& cell, bool certified, std::vector<int8_t> signs) {
-  s.tree[node].leaf = s.boxes.push(cell);
+  s.tree[node].index = s.boxes.push(cell);
   s.tree[node].fate = certified ? LeafFate::Solution : LeafFate::Undecided;
   s.certified.push_back(certified);
   s.signs.insert(s.signs.end(), signs.begin(), signs.end());
