@@ -39,13 +39,13 @@ double resident_mib() { return resident_bytes() / (1024.0 * 1024.0); }
 
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 // Memory still needed per output box after the search stops, for the merge, the
-// neighbourhood graph, the links and the outputs: the peak minus the resident memory at the
-// stop was about 600 bytes per output box on RRRRR (eps 0.05 and 0.1, two threads) and
-// 505 on 3-RPR at eps 0.3 (9.4 M boxes: 2.0 GB at the stop, 6.8 GB at the peak, after the
-// graph's and the outputs' memory was cut); 1 KiB leaves room for a model with more
-// variables (tests/long_runs.py, case memory_limit). It was 2 KiB, which stopped 3-RPR at
-// eps 0.3 under a 20 GiB limit with 6.8 GB used.
-constexpr double kReservePerBox = 1024;
+// neighbourhood graph, the links and the outputs (the peak minus the peak of the search,
+// summary.json's phases): 123 and 128 bytes per output box on 3-RPR at eps 0.6 and 0.3 with
+// the certificate's link proofs, 51 without (commit 00e75b6); 261 on RRRRR at eps 0.1,
+// where the fixed costs weigh more. It was 1 KiB, measured before the graph phase was cut,
+// and stopped 3-RPR at eps 0.1 under a 20 GiB limit with 3.6 GiB used
+// (tests/long_runs.py, case memory_limit, checks a run stopped by the limit stays below it).
+constexpr double kReservePerBox = 320;
 
 void validate(const SolveOptions& o) {
   if (!(o.eps > 0) || !std::isfinite(o.eps))

@@ -250,8 +250,19 @@ struct ErrorCase {
 
 const std::string H = "robot T\npose x in [0, 1]\ncommand q in [0, 1]\n";  // lines 1-3
 
+// Nine pose variables, nine commands, nine equations (28 lines): 18 variables.
+std::string eighteen_variables() {
+  std::string t = "robot T\n";
+  for (int i = 0; i < 9; ++i) t += "pose x" + std::to_string(i) + " in [0, 1]\n";
+  for (int i = 0; i < 9; ++i) t += "command q" + std::to_string(i) + " in [0, 1]\n";
+  for (int i = 0; i < 9; ++i)
+    t += "equation x" + std::to_string(i) + " - q" + std::to_string(i) + " = 0\n";
+  return t;
+}
+
 std::vector<ErrorCase> error_cases() {
   return {
+      {"TooManyVariables", eighteen_variables(), 29, 1, {"18 variables", "at most 16"}},
       {"UnexpectedToken", H + "equation x + * q = 1\n", 4, 14, {"expected an expression", "'*'"}},
       {"MissingEquals", H + "equation x + q 1\n", 4, 16, {"expected '='", "'1'"}},
       {"UnclosedParen", H + "equation (x + q = 1\n", 4, 17, {"expected ')'", "'='"}},
