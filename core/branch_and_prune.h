@@ -21,7 +21,7 @@ namespace aspects {
 // cell, which may hold solutions, like an undecided box.
 enum class LeafFate : uint8_t { Solution, Undecided, Discarded, Deferred, Unexplored };
 
-// 16 bytes: 22 M nodes on 3-RPR at eps 0.3, about 240 M expected at eps 0.1. The two
+// 16 bytes: 22 M nodes on 3-RPR at eps 0.3, 232 M at eps 0.1. The two
 // children of an internal node are adjacent (right = left + 1), so one index serves both
 // kinds of node.
 struct SearchNode {
