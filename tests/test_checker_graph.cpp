@@ -72,7 +72,10 @@ TEST(CheckerGraph, SweepFindsExactlyThePairsOfTheRule) {
   for (const auto& periodic : kinds)
     for (int trial = 0; trial < 5; ++trial) {
       cc::OutBoxes R = random_boxes(rng, 300, periodic);
-      auto got = cc::neighbour_pairs(R, periodic, two_pi);
+      std::vector<std::pair<int, int>> got;
+      const cc::NeighbourSweep sweep(R, periodic, two_pi);
+      const size_t visited = sweep.run([&](int a, int b) { got.emplace_back(a, b); });
+      EXPECT_EQ(visited, got.size());
       std::sort(got.begin(), got.end());  // a pair met through two shifts comes twice
       got.erase(std::unique(got.begin(), got.end()), got.end());
       const auto want = brute_force(R, periodic, two_pi);
@@ -89,3 +92,89 @@ TEST(CheckerGraph, SweepFindsExactlyThePairsOfTheRule) {
 }
 
 }  // namespace
+
+namespace {
+
+// Bound (11) by the book: per sign class, a union-find over the brute-force pairs.
+long brute_force_bound(const cc::OutBoxes& R, const std::vector<std::pair<int, int>>& M,
+                       uint32_t full) {
+  std::vector<uint32_t> classes;
+  for (size_t b = 0; b < R.size(); ++b)
+    if (R.solution[b] && ((R.pos[b] | R.neg[b]) & full) == full) classes.push_back(R.pos[b] & full);
+  std::sort(classes.begin(), classes.end());
+  classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+  long total = 0;
+  for (uint32_t s : classes) {
+    auto compatible = [&](int b) { return !(R.neg[b] & s) && !(R.pos[b] & ~s & full); };
+    cc::UnionFind uf;
+    uf.reset(R.size());
+    for (const auto& e : M)
+      if (compatible(e.first) && compatible(e.second)) uf.unite(e.first, e.second);
+    std::vector<int> roots;
+    for (size_t b = 0; b < R.size(); ++b)
+      if (R.solution[b] && (R.pos[b] & full) == s && (R.neg[b] & full) == (~s & full))
+        roots.push_back(uf.find(int(b)));
+    std::sort(roots.begin(), roots.end());
+    total += long(std::unique(roots.begin(), roots.end()) - roots.begin());
+  }
+  return total;
+}
+
+}  // namespace
+
+// The streamed bound (one sweep of M per group of at most 32 classes, a union-find per
+// class) equals the bound by the book, with more than 32 classes so that several groups
+// run, and with some factors left out of `use`.
+TEST(CheckerGraph, StreamedBoundEqualsTheBoundByTheBook) {
+  cc::Ival two_pi;
+  mpfi_const_pi(two_pi);
+  mpfi_mul_ui(two_pi, two_pi, 2);
+  std::mt19937 rng(11);
+  const std::vector<bool> periodic = {false, true, false};
+  std::uniform_int_distribution<int> sign(0, 5);
+  for (int trial = 0; trial < 4; ++trial) {
+    cc::OutBoxes R = random_boxes(rng, 400, periodic);
+    for (size_t b = 0; b < R.size(); ++b) {
+      R.pos[b] = R.neg[b] = 0;
+      for (int i = 0; i < 7; ++i) {  // 7 factors: up to 128 classes
+        const int s = sign(rng);     // mostly proved signs, some unproved
+        if (s < 3) R.pos[b] |= 1u << i;
+        else if (s < 5) R.neg[b] |= 1u << i;
+      }
+      R.solution[b] = sign(rng) != 0;
+    }
+    const auto M = brute_force(R, periodic, two_pi);
+    const cc::NeighbourSweep sweep(R, periodic, two_pi);
+    size_t classes = 0;
+    for (uint32_t use : {0x7fu, 0x1fu, 0x3u}) {
+      size_t pairs = 0;
+      const long want = brute_force_bound(R, M, use);
+      EXPECT_EQ(cc::lower_bound(R, sweep, use, SIZE_MAX, &pairs), want) << "use " << use;
+      EXPECT_GE(pairs, M.size());  // a pair met through two shifts is visited twice
+      if (use == 0x7fu) {
+        std::vector<uint32_t> s;
+        for (size_t b = 0; b < R.size(); ++b)
+          if (R.solution[b] && ((R.pos[b] | R.neg[b]) & use) == use) s.push_back(R.pos[b]);
+        std::sort(s.begin(), s.end());
+        classes = size_t(std::unique(s.begin(), s.end()) - s.begin());
+      }
+      EXPECT_GT(want, 0);
+    }
+    EXPECT_GT(classes, 32u);  // several groups of classes ran
+  }
+}
+
+// Beyond the pair limit the sweep stops with std::length_error.
+TEST(CheckerGraph, PairLimitStopsTheSweep) {
+  cc::Ival two_pi;
+  mpfi_const_pi(two_pi);
+  mpfi_mul_ui(two_pi, two_pi, 2);
+  std::mt19937 rng(3);
+  cc::OutBoxes R = random_boxes(rng, 300, {false, false});
+  const cc::NeighbourSweep sweep(R, {false, false}, two_pi);
+  const size_t all = sweep.run([](int, int) {});
+  ASSERT_GT(all, 10u);
+  EXPECT_EQ(sweep.run([](int, int) {}, all), all);
+  EXPECT_THROW(sweep.run([](int, int) {}, all - 1), std::length_error);
+  EXPECT_THROW(cc::lower_bound(R, sweep, 0, all - 1), std::length_error);
+}

@@ -8,8 +8,10 @@
 #include <mpfi.h>
 #include <openssl/evp.h>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -349,18 +351,38 @@ struct OutBoxes {
 // (graph M) or inward (links) to doubles give the shifted bound each check needs.
 void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x);
 
-// Pairs (a, b), a < b, such that for some shift k (k_v ∈ {−1, 0, 1} on periodic variables)
-// a meets b + 2πk with the shifted bounds rounded outward; a superset of the pairs that
-// share a point modulo 2π. Throws std::length_error beyond `max_pairs` pairs: boxes that
-// all overlap (one IMAGE for many cells) would make M quadratic in memory.
-std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
-                                                 const std::vector<bool>& periodic,
-                                                 const Ival& two_pi, size_t max_pairs = SIZE_MAX);
+// The neighbourhood graph M, never held: a sort-and-sweep over the output boxes (and their
+// 2π-shifted copies on the sweep variable) that hands each pair (a, b), a < b, such that for
+// some shift k (k_v ∈ {−1, 0, 1} on periodic variables) a meets b + 2πk with the shifted
+// bounds rounded outward, to a visitor: a superset of the pairs that share a point modulo
+// 2π (a pair met through two shifts may come twice). Held whole, M took 8 bytes a pair
+// (2.4·10^9 pairs for 3-RPR at eps 0.1).
+class NeighbourSweep {
+ public:
+  NeighbourSweep(const OutBoxes& R, const std::vector<bool>& periodic, const Ival& two_pi);
+  // Visits every pair of M and returns how many it visited. Throws std::length_error beyond
+  // `max_pairs` pairs: boxes that all overlap (one IMAGE for many cells) make M quadratic.
+  size_t run(const std::function<void(int, int)>& visit, size_t max_pairs = SIZE_MAX) const;
+
+ private:
+  struct Item {
+    double lo, hi, elo, ehi;  // on d (shifted by 2πk), and on e (all of R if there is none)
+    int id, k;
+  };
+  const OutBoxes& R_;
+  std::vector<int> slot_;  // per variable: its column in shifted_, -1 if not periodic
+  // shifted_[(b·P + slot)·2 + (k > 0)]: the ends of b_v + 2πk, k = ±1, rounded outward.
+  std::vector<std::array<double, 2>> shifted_;
+  std::vector<Item> items_;  // sorted by lo
+};
 // Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
 // with s, joined by M) holding a solution box whose signs are all verified and equal s.
-// Only the factors whose bit is set in `use` separate (the others are ignored). Throws
-// std::length_error when classes × (pairs + boxes) exceeds 2^32.
-long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, uint32_t use);
+// Only the factors whose bit is set in `use` separate (the others are ignored). Sweeps M
+// once per group of classes, a union-find per class of a group (at most 2^28 entries).
+// Throws std::length_error beyond `max_pairs` pairs, and when classes × (pairs + boxes)
+// exceeds 2^32. `pairs`, if given, receives the number of pairs of M.
+long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_t max_pairs,
+                 size_t* pairs = nullptr);
 // Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
 long filtered_count(const std::vector<int64_t>& sizes);
 

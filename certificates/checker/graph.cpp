@@ -1,7 +1,7 @@
 // graph.cpp — union-find (path halving), the neighbourhood graph by sort-and-sweep (not
 // O(N²), and not 3^(periodic variables) copies: only the sweep dimension is shifted, the
-// other variables are tested shift by shift), the sign-separated lower bound and the
-// filtering rule.
+// other variables are tested shift by shift; its pairs go straight into the union-finds,
+// M is never held), the sign-separated lower bound and the filtering rule.
 #include "checker.h"
 
 #include <algorithm>
@@ -31,15 +31,16 @@ void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x) {
   mpfi_add_d(t, t, x);
 }
 
-std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
-                                                 const std::vector<bool>& periodic,
-                                                 const Ival& two_pi, size_t max_pairs) {
+NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& periodic,
+                               const Ival& two_pi)
+    : R_(R), slot_(size_t(R.nv), -1) {
   const int nv = R.nv;
   const size_t N = R.size();
-  std::vector<std::pair<int, int>> out;
-  // S[(b·nv + v)·3 + k + 1]: b_v + 2πk with its ends rounded outward (k = 0 if v is not
-  // periodic); the hull and mean width of the boxes per variable.
-  std::vector<std::array<double, 2>> S(N * nv * 3);
+  int P = 0;
+  for (int v = 0; v < nv; ++v)
+    if (periodic[v]) slot_[v] = P++;
+  shifted_.resize(N * size_t(P) * 2);
+  // The hull and mean width of the boxes per variable choose the sweep variables.
   std::vector<double> hlo(nv, 1e308), hhi(nv, -1e308), mean(nv, 0);
   Ival t;
   for (size_t b = 0; b < N; ++b)
@@ -48,10 +49,9 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
       hlo[v] = std::min(hlo[v], lo);
       hhi[v] = std::max(hhi[v], hi);
       mean[v] += (hi - lo) / double(N);
-      for (int k = -1; k <= 1; ++k) {
-        std::array<double, 2>& s = S[(b * nv + v) * 3 + k + 1];
-        s = {lo, hi};
-        if (!k || !periodic[v]) continue;
+      if (slot_[v] < 0) continue;
+      for (int k = -1; k <= 1; k += 2) {
+        std::array<double, 2>& s = shifted_[(b * P + slot_[v]) * 2 + (k > 0)];
         shift_by_periods(t, two_pi, k, lo);
         s[0] = t.lo();
         shift_by_periods(t, two_pi, k, hi);
@@ -70,7 +70,7 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
     }
   }
   // A second, non-periodic variable e, kept in the items: pairs apart on e are dropped
-  // before the test below reads the boxes (3-RPR at eps 0.3: 3.8e11 candidates on d).
+  // before the test reads the boxes (3-RPR at eps 0.3: 3.8e11 candidates on d).
   int e = -1;
   best = -1;
   for (int v = 0; v < nv; ++v) {
@@ -80,26 +80,27 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
       e = v;
     }
   }
-  struct Item {
-    double lo, hi, elo, ehi;  // on d (shifted by 2πk), and on e (all of R if there is none)
-    int id, k;
-  };
-  std::vector<Item> items;
   for (size_t b = 0; b < N; ++b)
     for (int k = periodic[d] ? -1 : 0; k <= (periodic[d] ? 1 : 0); ++k) {
-      const std::array<double, 2>& s = S[(b * nv + d) * 3 + k + 1];
+      const double* s = k ? shifted_[(b * P + slot_[d]) * 2 + (k > 0)].data() : R.box(b) + 2 * d;
       double elo = -1e308, ehi = 1e308;
       if (e >= 0) {
         elo = R.box(b)[2 * e];
         ehi = R.box(b)[2 * e + 1];
       }
       if (!k || (s[1] >= hlo[d] && s[0] <= hhi[d]))
-        items.push_back({s[0], s[1], elo, ehi, int(b), k});
+        items_.push_back({s[0], s[1], elo, ehi, int(b), k});
     }
-  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) { return x.lo < y.lo; });
-  for (size_t i = 0; i < items.size(); ++i)
-    for (size_t j = i + 1; j < items.size() && items[j].lo <= items[i].hi; ++j) {
-      const Item &p = items[i], &q = items[j];
+  std::sort(items_.begin(), items_.end(), [](const Item& x, const Item& y) { return x.lo < y.lo; });
+}
+
+size_t NeighbourSweep::run(const std::function<void(int, int)>& visit, size_t max_pairs) const {
+  const int nv = R_.nv;
+  const size_t P = shifted_.size() / (2 * std::max<size_t>(R_.size(), 1));
+  size_t pairs = 0;
+  for (size_t i = 0; i < items_.size(); ++i)
+    for (size_t j = i + 1; j < items_.size() && items_[j].lo <= items_[i].hi; ++j) {
+      const Item &p = items_[i], &q = items_[j];
       if (p.id == q.id || (p.k && q.k) || q.elo > p.ehi || p.elo > q.ehi) continue;
       // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
       // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
@@ -107,20 +108,24 @@ std::vector<std::pair<int, int>> neighbour_pairs(const OutBoxes& R,
       const int b = std::max(p.id, q.id);
       bool meet = true;
       for (int v = 0; v < nv && meet; ++v) {
-        const double* x = R.box(a) + 2 * v;
-        meet = false;
-        for (int k = 0; k < 3 && !meet; ++k) {
-          const std::array<double, 2>& s = S[(size_t(b) * nv + v) * 3 + k];
+        const double* x = R_.box(a) + 2 * v;
+        const double* y = R_.box(b) + 2 * v;
+        meet = x[0] <= y[1] && y[0] <= x[1];
+        for (int k = 0; k < 2 && !meet && slot_[v] >= 0; ++k) {
+          const std::array<double, 2>& s = shifted_[(size_t(b) * P + slot_[v]) * 2 + k];
           meet = x[0] <= s[1] && s[0] <= x[1];
         }
       }
-      if (meet && out.size() >= max_pairs) throw std::length_error("neighbourhood graph");
-      if (meet) out.emplace_back(a, b);
+      if (!meet) continue;
+      if (pairs >= max_pairs) throw std::length_error("neighbourhood graph");
+      ++pairs;
+      visit(a, b);
     }
-  return out;
+  return pairs;
 }
 
-long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, uint32_t use) {
+long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_t max_pairs,
+                 size_t* pairs) {
   const size_t N = R.size();
   const uint32_t full = use;
   // Only the sign vectors s of solution boxes with every used sign verified can count (bit
@@ -130,27 +135,49 @@ long lower_bound(const OutBoxes& R, const std::vector<std::pair<int, int>>& M, u
     if (R.solution[b] && ((R.pos[b] | R.neg[b]) & full) == full) classes.push_back(R.pos[b] & full);
   std::sort(classes.begin(), classes.end());
   classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
-  // One union-find over M per class: up to 2^20 classes (p = 20 user factors) on 10^5
-  // boxes would take hours. A real certificate has a handful of classes.
-  if (double(classes.size()) * double(M.size() + N) > double(uint64_t(1) << 32))
-    throw std::length_error("sign classes");
-  UnionFind uf;
-  std::vector<uint8_t> compat(N), counted(N);
+  // A union-find over M per class: up to 2^20 classes (p = 20 user factors) on 10^5 boxes
+  // would take hours. A real certificate has a handful of classes.
+  const double steps = double(classes.size()) * double(N);
+  if (steps > double(uint64_t(1) << 32)) throw std::length_error("sign classes");
+  // Classes in groups of at most 32 (a bit mask per box) whose union-finds hold at most 2^28
+  // entries (1 GiB): one sweep of M per group, and one even without a class, so that every
+  // certificate meets the pair limit.
+  const size_t per_gib = (size_t(1) << 28) / std::max<size_t>(N, 1);
+  const size_t group = std::min<size_t>(32, std::max<size_t>(1, per_gib));
+  std::vector<uint8_t> counted(N);
   long total = 0;
-  for (uint32_t s : classes) {
-    for (size_t b = 0; b < N; ++b) compat[b] = !(R.neg[b] & s) && !(R.pos[b] & ~s & full);
-    uf.reset(N);
-    for (const auto& e : M)
-      if (compat[e.first] && compat[e.second]) uf.unite(e.first, e.second);
-    std::fill(counted.begin(), counted.end(), 0);
-    for (size_t b = 0; b < N; ++b) {
-      if (!R.solution[b] || (R.pos[b] & full) != s || (R.neg[b] & full) != (~s & full)) continue;
-      int r = uf.find(int(b));
-      if (counted[r]) continue;
-      counted[r] = 1;
-      ++total;
+  size_t seen = 0;
+  for (size_t g0 = 0; g0 == 0 || g0 < classes.size(); g0 += group) {
+    const size_t g = std::min(group, classes.size() - g0);
+    std::vector<UnionFind> uf(g);
+    std::vector<uint32_t> compat(N);  // bit c: box b is compatible with class g0 + c
+    for (size_t c = 0; c < g; ++c) {
+      const uint32_t s = classes[g0 + c];
+      uf[c].reset(N);
+      for (size_t b = 0; b < N; ++b)
+        if (!(R.neg[b] & s) && !(R.pos[b] & ~s & full)) compat[b] |= uint32_t(1) << c;
+    }
+    seen = M.run(
+        [&](int a, int b) {
+          for (uint32_t both = compat[a] & compat[b]; both; both &= both - 1)
+            uf[__builtin_ctz(both)].unite(a, b);
+        },
+        max_pairs);
+    if (double(classes.size()) * double(seen + N) > double(uint64_t(1) << 32))
+      throw std::length_error("sign classes");
+    for (size_t c = 0; c < g; ++c) {
+      const uint32_t s = classes[g0 + c];
+      std::fill(counted.begin(), counted.end(), 0);
+      for (size_t b = 0; b < N; ++b) {
+        if (!R.solution[b] || (R.pos[b] & full) != s || (R.neg[b] & full) != (~s & full)) continue;
+        const int r = uf[c].find(int(b));
+        if (counted[r]) continue;
+        counted[r] = 1;
+        ++total;
+      }
     }
   }
+  if (pairs) *pairs = seen;
   return total;
 }
 

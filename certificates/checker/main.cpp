@@ -625,20 +625,19 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     if (records != rec() - 1) malformed(rec(), "end: wrong record count");
     rd.expect_eof();
     // A real subdivision has a few neighbours per box, while S records that share one IMAGE
-    // over many cells make M quadratic (10^5 boxes: 5·10^9 pairs, 40 GB): rejected instead.
-    std::vector<std::pair<int, int>> M;
-    try {
-      M = neighbour_pairs(R, periodic, ev->two_pi, (size_t(1) << 22) + 64 * R.size());
-    } catch (const std::length_error&) {
-      rejected(claim_rec, "the neighbourhood graph has more than 2^22 + 64 pairs per box");
-    }
+    // over many cells make M quadratic (10^5 boxes: 5·10^9 pairs): rejected instead.
+    const size_t max_pairs = (size_t(1) << 22) + 64 * R.size();
+    const NeighbourSweep M(R, periodic, ev->two_pi);
     uint32_t checkable = 0;  // the factors the checker can verify: all but `user` ones
     for (int i = 0; i < p; ++i)
       if (factors[i].kind != Factor::User) checkable |= 1u << i;
+    size_t pairs = 0;
     try {
-      out.recomputed = lower_bound(R, M, (1u << p) - 1);
-      out.checked = out.user_factors ? lower_bound(R, M, checkable) : out.recomputed;
-    } catch (const std::length_error&) {
+      out.recomputed = lower_bound(R, M, (1u << p) - 1, max_pairs, &pairs);
+      out.checked = out.user_factors ? lower_bound(R, M, checkable, max_pairs) : out.recomputed;
+    } catch (const std::length_error& e) {
+      if (std::string(e.what()) == "neighbourhood graph")
+        rejected(claim_rec, "the neighbourhood graph has more than 2^22 + 64 pairs per box");
       rejected(claim_rec, "too many sign classes for the neighbourhood graph (2^32 steps)");
     }
     out.claimed = claim;
@@ -653,7 +652,7 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
       if (o.trust_factors) out.reason += "; trusted (--trust-factors)";
       if (!o.trust_factors) out.verdict = "UNCHECKED";
     }
-    return M.size();
+    return pairs;
   }
 
   void run(const CheckOptions& o) {
