@@ -23,7 +23,8 @@
 #   --build DIR         build directory holding apps/aspects and certificates/check_cert
 #                       (default: the repository's build/)
 #   --check-jobs N      certificates checked at once, after every solve (default: the
-#                       number of cores; check_cert runs on one core)
+#                       number of cores); each check_cert gets N threads too, so that the
+#                       last, largest check does not run on one core alone
 #   --timeout SECONDS   wall-clock limit for each solve and for each check (default none);
 #                       a run that hits it is recorded as "did not finish" and the others go on
 #   --out DIR           output directory (default paper_repro/out)
@@ -263,9 +264,9 @@ for key in "${KEYS[@]}"; do
 done
 
 # ------------------------------------------------------------------ checks
-# After every solve, so that the solvers' times are not shared with a checker. check_cert
-# is sequential: up to CHECK_JOBS run at once, the smallest certificates first, so that
-# the largest ones run side by side at the end. Each writes its outcome in its run
+# After every solve, so that the solvers' times are not shared with a checker. Up to
+# CHECK_JOBS run at once, each with CHECK_JOBS threads, the smallest certificates first, so
+# that the largest ones run side by side at the end and the last one alone on every core. Each writes its outcome in its run
 # directory (record.txt, manifest.line, failure.txt); the shell collects them after.
 check_one() {
   local key=$1 i=${INDEX_OF[$1]} name=${NAME[$1]} eps=${EPS_OF[$1]}
@@ -279,7 +280,7 @@ check_one() {
   t0=$(now); crc=0
   # --json: the table takes the certified bound from check_cert's verdict (check.json),
   # never from the solver's summary.json.
-  "${TIMEOUT_CMD[@]}" "$CHECK" --json "$cert" > "$rd/check.json" 2> "$rd/check.log" || crc=$?
+  "${TIMEOUT_CMD[@]}" "$CHECK" --threads "$CHECK_JOBS" --json "$cert" > "$rd/check.json" 2> "$rd/check.log" || crc=$?
   t1=$(now); cwall=$(elapsed "$t0" "$t1")
   check_line=$(head -n 1 "$rd/check.json")
   verdict=$("$PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["verdict"])' \

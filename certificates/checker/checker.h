@@ -9,12 +9,17 @@
 #include <openssl/evp.h>
 
 #include <array>
+#include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -82,6 +87,7 @@ class LineReader {
 struct CheckOptions {
   bool quiet = false;          // no statistics on stderr
   bool trust_factors = false;  // accept a bound that rests on user-supplied factors
+  int threads = 1;             // threads for the interval proofs (proof_batch.cpp)
 };
 
 // What a check found; `verdict` is VERIFIED, UNCHECKED, REJECTED or MALFORMED.
@@ -289,6 +295,7 @@ struct Factor {
 class Prover {
  public:
   explicit Prover(Evaluator& ev);
+  Evaluator& evaluator() { return ev_; }
   void load(const double* lohi);  // box := the double box
   std::vector<Ival> box;          // nv intervals: the box the next call works on
 
@@ -325,6 +332,43 @@ class Prover {
   uint64_t cmd_mask_ = 0, pose_mask_ = 0, all_mask_ = 0;
   std::vector<Ival> w_, Jx_, Jq_, A_, b_;
   Ival t1_, t2_;
+};
+
+// ---- The interval proofs on T threads (proof_batch.cpp): main.cpp decides each record's
+// structure itself and queues its proofs; a batch runs on every thread (each with its own
+// evaluator and prover) and is judged in record order, so the verdict is that of one
+// thread: the first failed proof in record order, the work limit charged job by job.
+class ProofBatch {
+ public:
+  // A proof on one thread's prover: "" when it holds, else why not (the rejection reason).
+  using Proof = std::function<std::string(Prover&)>;
+  // `work_before`: the node evaluations the check did before its first proof.
+  ProofBatch(const Model& m, int threads, uint64_t work_before);
+  ~ProofBatch();
+  // Queues the proof of `record`; `limit` is the work the check may have done by its end.
+  void add(long record, uint64_t limit, Proof proof);
+  // Runs the queued proofs; throws the rejection of the first that failed, in record order.
+  void flush();
+  long refutations() const;
+  long refute_boxes() const;
+  uint64_t work;  // node evaluations so far, judged proofs included
+
+ private:
+  struct Worker;
+  struct Job;
+  void work_on(int t);
+  void serve(int t);
+  const mpfr_prec_t prec_;
+  const size_t batch_;  // jobs per batch
+  std::vector<std::unique_ptr<Worker>> workers_;
+  std::vector<Job> jobs_;
+  std::atomic<size_t> next_{0};
+  std::vector<std::thread> helpers_;
+  std::mutex m_;
+  std::condition_variable go_, done_;
+  uint64_t round_ = 0;
+  int busy_ = 0;
+  bool stop_ = false;
 };
 
 // ---- The combinatorial half of the check (graph.cpp): a union-find, the neighbourhood

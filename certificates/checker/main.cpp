@@ -39,8 +39,9 @@ struct Checker {
   LineReader rd;
   Verdict& out;
   Model m;
-  std::unique_ptr<Evaluator> ev;
-  std::unique_ptr<Prover> pr;
+  std::unique_ptr<Evaluator> ev;  // the header's constants; the proofs run in `batch`
+  std::unique_ptr<ProofBatch> batch;
+  int threads = 1;
   int n = 0, nv = 0, p = 0;    // equations, variables, factors
   int version = 0;             // 1: P2 without column weights (D = 1); 2: with DX, DQ
   std::vector<Ival> dlo, dhi;  // enclosures of the declared bounds
@@ -55,6 +56,7 @@ struct Checker {
   std::tuple<long, long, long> last_witness{-1, -1, -1};  // (CSNC, A, B)
   std::tuple<long, long, long> last_assembly{-1, -1, -1};  // (CSNC, A, B)
   int work_base = 29;
+  size_t pairs_ = 0;  // pairs of M, for the statistics
 
   Checker(FILE* f, Verdict& v) : rd(f), out(v) {}
   long rec() const { return rd.record(); }
@@ -69,19 +71,25 @@ struct Checker {
   // evaluation weighted by the precision (prec/64 + 2 limbs). A hostile certificate (a model
   // of 10^5 nodes, refutations that bisect 4096 boxes) is stopped within minutes, not days.
   // CHECK_CERT_WORK_BASE (log2 of the base) changes how long it may work, never the verdict.
-  void budget() {
+  uint64_t work_limit() const {
     const uint64_t weight = uint64_t(mpfr_get_default_prec() / 64 + 2);
     const uint64_t base = uint64_t(1) << work_base;
     const uint64_t per_byte = uint64_t(1) << 10;
-    ev->work_limit = (base + per_byte * rd.bytes()) / weight;
+    return (base + per_byte * rd.bytes()) / weight;
   }
   void next_record() {
     rd.next();
-    budget();
+    ev->work_limit = work_limit();
   }
-  bool refutes(const Box& box) {
-    pr->load(box.data());
-    return pr->refute();
+  // Queues a proof of the record read last (proof_batch.cpp): it runs later, maybe on
+  // another thread, so it captures what it needs by value.
+  void prove(ProofBatch::Proof proof) { batch->add(rec(), work_limit(), std::move(proof)); }
+  // A proof that `box` holds no feasible solution; `why` + the box is the rejection otherwise.
+  void prove_refuted(const Box& box, const char* why) {
+    prove([this, box, why](Prover& pr) -> std::string {
+      pr.load(box.data());
+      return pr.refute() ? std::string() : why + show(box);
+    });
   }
   // hi - lo >= 2π, proved: a periodic root cell then covers every angle (a shorter one,
   // declared with a rounded pi, would leave a gap that splits an aspect at the seam).
@@ -158,7 +166,6 @@ struct Checker {
     } catch (const ModelError& e) {
       malformed(model_rec, std::string("embedded model: ") + e.what());
     }
-    pr.reset(new Prover(*ev));
     n = m.n();
     nv = int(m.vars.size());
     out.robot = m.name;
@@ -281,11 +288,9 @@ struct Checker {
     if (!within(lo, hi, lh[0], lh[1])) reject("contraction is not inside the cell");
     Box slab = cell;
     put(slab, v, lo, lh[0]);
-    if (lh[0] > lo && !refutes(slab))
-      reject("cannot refute the slab below the contraction" + show(slab));
+    if (lh[0] > lo) prove_refuted(slab, "cannot refute the slab below the contraction");
     put(slab, v, lh[1], hi);
-    if (lh[1] < hi && !refutes(slab))
-      reject("cannot refute the slab above the contraction" + show(slab));
+    if (lh[1] < hi) prove_refuted(slab, "cannot refute the slab above the contraction");
     put(cell, v, lh[0], lh[1]);
   }
 
@@ -316,7 +321,7 @@ struct Checker {
     const long named = digits == 2 ? m.n() : long(m.constraints.size());
     if (h != "hs" && (i < 0 || i >= named))
       malformed(rec(), "bad hint '" + std::string(h) + "'");
-    if (!refutes(cell)) reject("cannot refute the discarded cell" + show(cell));
+    prove_refuted(cell, "cannot refute the discarded cell");
   }
 
   void leaf(const Box& cell) {
@@ -327,11 +332,15 @@ struct Checker {
       return;
     }
     rd.count(3);
-    pr->load(cell.data());
     // N (a cell a stopped search never reached) is checked and used as U is: its box is the
     // cell, it may hold solutions, and the bound counts it in every compatible class.
     const bool unexplored = rd.kind() == "N";
-    store(rd.word(), false, cell.data(), false);
+    const std::string signs(rd.word());
+    store(signs, cell.data(), false);
+    prove([this, signs, cell](Prover& pr) {
+      pr.load(cell.data());
+      return signs_proved(pr, signs, false);
+    });
     ++(unexplored ? out.unexplored : out.undecided);
   }
 
@@ -351,14 +360,21 @@ struct Checker {
     for (int j = 0; j < n; ++j)
       if (!(DX[j] > 0) || !(DQ[j] > 0)) reject("P2: a column weight is not positive");
     const Box B = solution_box(cell, Q, img);
-    pr->load(cell.data());
-    unique_zero("P1", Q, C, img, "the Hansen-Sengupta image is not inside IMAGE");
-    pr->load(B.data());
-    const char* why = pr->regular(CX.data(), CQ.data(), DX.data(), DQ.data());
-    if (why) reject(std::string("P2: ") + why);
-    if (ev->feasible(pr->box.data()) != 2)
-      reject("inner test: a constraint is not True on the box" + show(B));
-    store(signs, true, B.data(), true);
+    const std::string s(signs);
+    // Queued before store() checks SIGNS: a record whose P1 fails and whose SIGNS is
+    // malformed is rejected for P1, as when the proofs ran in line.
+    prove([=](Prover& pr) {
+      pr.load(cell.data());
+      std::string why = unique_zero(pr, "P1", Q, C, img, "the Hansen-Sengupta image is not inside IMAGE");
+      if (!why.empty()) return why;
+      pr.load(B.data());
+      if (const char* w = pr.regular(CX.data(), CQ.data(), DX.data(), DQ.data()))
+        return std::string("P2: ") + w;
+      if (pr.evaluator().feasible(pr.box.data()) != 2)
+        return "inner test: a constraint is not True on the box" + show(B);
+      return signs_proved(pr, s, true);
+    });
+    store(s, B.data(), true);
     ++out.solutions;
   }
 
@@ -385,40 +401,55 @@ struct Checker {
     return B;
   }
 
-  // A Hansen–Sengupta step on pr->box proves `claim` (P1 or P3): its image H lies in int Q~
-  // (so f has a unique zero in Q~) and in `target` (one lo/hi pair per command).
-  void unique_zero(const std::string& claim, const Box& Q, const std::vector<double>& C,
-                   const Box& target, const std::string& outside, bool pose = false) {
-    if (const char* why = pr->newton(Q.data(), C.data(), pose)) reject(claim + ": " + why);
+  // A Hansen–Sengupta step on pr.box proves `claim` (P1 or P3): its image H lies in int Q~
+  // (so f has a unique zero in Q~) and in `target` (one lo/hi pair per command). Returns
+  // "" when it does, else the rejection.
+  std::string unique_zero(Prover& pr, const std::string& claim, const Box& Q,
+                          const std::vector<double>& C, const Box& target,
+                          const std::string& outside, bool pose = false) const {
+    if (const char* why = pr.newton(Q.data(), C.data(), pose)) return claim + ": " + why;
     for (int j = 0; j < n; ++j) {
-      const Ival& y = pr->y[j];
+      const Ival& y = pr.y[j];
       if (!inside(y, Q[2 * j], Q[2 * j + 1], true))
-        reject(claim + ": the Hansen-Sengupta image is not inside the interior of Q~");
-      if (!inside(y, target[2 * j], target[2 * j + 1], false)) reject(claim + ": " + outside);
+        return claim + ": the Hansen-Sengupta image is not inside the interior of Q~";
+      if (!inside(y, target[2 * j], target[2 * j + 1], false)) return claim + ": " + outside;
     }
+    return std::string();
   }
 
-  // Parses SIGNS, proves every claimed sign on pr->box, and stores the output box.
-  void store(std::string_view s, bool jac, const double* box, bool solution) {
-    bool ok = s.size() == size_t(p) && s.find_first_not_of("+-0") == s.npos;
-    if (p == 0) ok = s == ".";  // SIGNS: p characters of "+-0", or "." when there is no factor
-    if (!ok) malformed(rec(), "bad SIGNS field '" + std::string(s) + "'");
+  // Parses SIGNS and stores the output box with its claimed signs; signs_proved() proves
+  // them (a claim that fails rejects the whole certificate).
+  bool well_formed(std::string_view s) const {
+    if (p == 0) return s == ".";  // SIGNS: p characters of "+-0", or "." when there is no factor
+    return s.size() == size_t(p) && s.find_first_not_of("+-0") == s.npos;
+  }
+  void store(std::string_view s, const double* box, bool solution) {
+    if (!well_formed(s)) malformed(rec(), "bad SIGNS field '" + std::string(s) + "'");
     uint32_t pos = 0, neg = 0;
-    Ival val;
-    for (int i = 0; i < p; ++i) {
-      if (s[i] == '0') continue;
-      const std::string which = "factor " + std::to_string(i + 1);
-      if (!pr->factor(factors[i], jac, val)) reject(which + " is not defined on the box");
-      // A proved non-user factor leaves the Jacobians of the box computed, for the next ones.
-      if (factors[i].kind != Factor::User) jac = true;
-      if (val.sign() != (s[i] == '+' ? 1 : -1))
-        reject("sign '" + std::string(1, s[i]) + "' of " + which + " not proved");
-      (s[i] == '+' ? pos : neg) |= 1u << i;
-    }
+    for (int i = 0; i < p; ++i)
+      if (s[i] != '0') (s[i] == '+' ? pos : neg) |= 1u << i;
     R.lohi.insert(R.lohi.end(), box, box + 2 * nv);
     R.pos.push_back(pos);
     R.neg.push_back(neg);
     R.solution.push_back(solution);
+  }
+
+  // Proves every claimed sign of SIGNS on pr.box; `jac`: its Jacobians are already
+  // computed. Returns "" when every sign holds (or SIGNS is malformed: store() says so),
+  // else the rejection.
+  std::string signs_proved(Prover& pr, const std::string& s, bool jac) const {
+    if (!well_formed(s)) return std::string();
+    Ival val;
+    for (int i = 0; i < p; ++i) {
+      if (s[i] == '0') continue;
+      const std::string which = "factor " + std::to_string(i + 1);
+      if (!pr.factor(factors[i], jac, val)) return which + " is not defined on the box";
+      // A proved non-user factor leaves the Jacobians of the box computed, for the next ones.
+      if (factors[i].kind != Factor::User) jac = true;
+      if (val.sign() != (s[i] == '+' ? 1 : -1))
+        return "sign '" + std::string(1, s[i]) + "' of " + which + " not proved";
+    }
+    return std::string();
   }
 
   // `head COUNT`, then COUNT records of kind `kind`, each checked by record(i).
@@ -488,9 +519,11 @@ struct Checker {
       put(X, v, w[j], w[j]);
       put(commands, j, X[2 * m.command[j]], X[2 * m.command[j] + 1]);
     }
-    pr->load(X.data());
-    unique_zero("P3", Q, C, commands, "the command is not in both boxes");
-    linked.unite(int(a), int(b));
+    prove([=](Prover& pr) {
+      pr.load(X.data());
+      return unique_zero(pr, "P3", Q, C, commands, "the command is not in both boxes");
+    });
+    linked.unite(int(a), int(b));  // if the proof fails, the certificate is rejected
     last_link = {a, b};
     ++out.links;
   }
@@ -585,8 +618,10 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
           reject("x~ leaves the declared domain of " + m.vars[v].name);
         put(poses, j, R.box(id)[2 * v], R.box(id)[2 * v + 1]);
       }
-      pr->load(X.data());
-      unique_zero("assembly", Xt, C, poses, "the pose is not in the box", true);
+      prove([=](Prover& pr) {
+        pr.load(X.data());
+        return unique_zero(pr, "assembly", Xt, C, poses, "the pose is not in the box", true);
+      });
     }
     last_assembly = {c, a, b};
     ++out.assembly;
@@ -624,6 +659,7 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     const int64_t records = rd.expect({"end"}, 1).integer();
     if (records != rec() - 1) malformed(rec(), "end: wrong record count");
     rd.expect_eof();
+    batch->flush();  // every proof judged before the bound
     // A real subdivision has a few neighbours per box, while S records that share one IMAGE
     // over many cells make M quadratic (10^5 boxes: 5·10^9 pairs): rejected instead.
     const size_t max_pairs = (size_t(1) << 22) + 64 * R.size();
@@ -660,6 +696,27 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
       work_base = std::max(10, std::min(40, std::atoi(e)));
     header();
+    threads = std::max(1, o.threads);
+    batch.reset(new ProofBatch(m, threads, ev->work));
+    try {
+      body(o);
+    } catch (const CertError&) {
+      batch->flush();  // a failed proof of an earlier record is the one to report
+      throw;
+    }
+    out.cert_sha = rd.file_sha256();
+    if (o.quiet) return;
+    const auto elapsed = std::chrono::steady_clock::now() - t0;
+    std::fprintf(stderr,
+                 "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M, "
+                 "recomputed lower bound %ld, %d thread%s, %.2f s\n",
+                 batch->refutations(), batch->refute_boxes(), (unsigned long long)batch->work,
+                 pairs_, out.recomputed, threads, threads > 1 ? "s" : "",
+                 std::chrono::duration<double>(elapsed).count());
+  }
+
+  // Every section after the header; the proofs are queued and judged in record order.
+  void body(const CheckOptions& o) {
     tree();
     linked.reset(R.size());
     rd.next();
@@ -677,15 +734,7 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
       section("assembly", "V", [&](int64_t) { assembly(); });
       rd.next();
     }
-    const size_t pairs = claims(o);
-    out.cert_sha = rd.file_sha256();
-    if (o.quiet) return;
-    const auto elapsed = std::chrono::steady_clock::now() - t0;
-    std::fprintf(stderr,
-                 "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M, "
-                 "recomputed lower bound %ld, %.2f s\n",
-                 pr->refutations, pr->refute_boxes, (unsigned long long)ev->work, pairs,
-                 out.recomputed, std::chrono::duration<double>(elapsed).count());
+    pairs_ = claims(o);
   }
 };
 
@@ -784,10 +833,13 @@ std::string json_line(const Verdict& v, int code) {
 }
 
 const char* const kHelp =
-    "usage: check_cert [--quiet] [--json] [--trust-factors] FILE.cert | --version | --help\n"
+    "usage: check_cert [--quiet] [--json] [--trust-factors] [--threads N] FILE.cert\n"
+    "       check_cert --version | --help\n"
     "Re-verifies a certificate of `aspects solve` (certificates/FORMAT.md).\n"
     "  --json           print the verdict as one JSON object (for scripts)\n"
     "  --trust-factors  accept a lower bound that rests on user-supplied factors\n"
+    "  --threads N      run the interval proofs on N threads (default 1); the verdict,\n"
+    "                   the record it names and its reason do not depend on N\n"
     "Exit 0: verified; 1: rejected (or out of memory); 2: malformed or usage error;\n"
     "3: every proof verified, but the claimed lower bound rests on a user-supplied\n"
     "   `factor` the checker cannot verify (not given --trust-factors).\n";
@@ -816,6 +868,16 @@ int main(int argc, char** argv) {
       json = true;
     } else if (a == "--trust-factors") {
       o.trust_factors = true;
+    } else if (a == "--threads" || a.rfind("--threads=", 0) == 0) {
+      std::string v = a.size() > 9 ? a.substr(10) : (i + 1 < argc ? argv[++i] : "");
+      char* end = nullptr;
+      const long t = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end || t < 1 || t > 256) {
+        std::fprintf(stderr, "check_cert: --threads needs a number from 1 to 256, not '%s'\n",
+                     v.c_str());
+        return kMalformed;
+      }
+      o.threads = int(t);
     } else if (a.empty() || a[0] == '-' || !path.empty()) {
       usage = true;
     } else {
@@ -823,8 +885,8 @@ int main(int argc, char** argv) {
     }
   }
   if (usage || path.empty()) {
-    std::fprintf(stderr, "usage: check_cert [--quiet] [--json] [--trust-factors] FILE.cert"
-                         " (see --help)\n");
+    std::fprintf(stderr, "usage: check_cert [--quiet] [--json] [--trust-factors] [--threads N]"
+                         " FILE.cert (see --help)\n");
     return kMalformed;
   }
   FILE* f = std::fopen(path.c_str(), "rb");

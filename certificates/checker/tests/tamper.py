@@ -461,9 +461,19 @@ def replace_first_where(c, kind, pred, fn):
     return c.text()
 
 
-def run(check, path):
-    r = subprocess.run([check, "--quiet", path], stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-    return r.returncode, r.stdout.decode(errors="replace").strip()
+def run(check, path, env=None):
+    """check_cert on one thread, and on three with batches of three proofs (many batch
+    boundaries): the verdict, its record and its reason must not depend on the threads."""
+    env = dict(os.environ, **(env or {}))
+    r = subprocess.run([check, "--quiet", path], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       env=env)
+    one = r.returncode, r.stdout.decode(errors="replace").strip()
+    r = subprocess.run([check, "--quiet", "--threads", "3", path], stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, env=dict(env, CHECK_CERT_BATCH="3"))
+    three = r.returncode, r.stdout.decode(errors="replace").strip()
+    if three != one:
+        return -1, "threads change the verdict: %r against %r" % (three, one)
+    return one
 
 
 def main():
@@ -863,12 +873,10 @@ def work_limit_cases(check, work):
             path = os.path.join(work, "one_image_small.cert")
             with open(path, "w") as f:
                 f.write(one_image_bomb(200))
-        r = subprocess.run([check, "--quiet", path], stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, env=dict(os.environ, CHECK_CERT_WORK_BASE=env))
-        msg = r.stdout.decode(errors="replace").strip()
-        ok = r.returncode == want and word in msg
+        code, msg = run(check, path, {"CHECK_CERT_WORK_BASE": env})
+        ok = code == want and word in msg
         print("%s limit/%-49s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
-                                                            r.returncode, want, word, msg[:110]))
+                                                            code, want, word, msg[:110]))
         failed += not ok
     return failed
 

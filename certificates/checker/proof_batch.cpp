@@ -1,0 +1,152 @@
+// proof_batch.cpp — the interval proofs of a check on T threads. The record-by-record
+// check (main.cpp) reads every record and decides its structure itself, in order; each
+// interval proof (a refutation, a Hansen–Sengupta step, a regularity test, a factor sign)
+// becomes a job of a batch. A batch runs on every thread, each with its own evaluator and
+// prover, and is then judged in record order, so the verdict, the record it names and its
+// reason are those of one thread, whatever T is: the first failed proof in record order
+// wins, and the work limit is charged job by job in record order as a sequential check
+// charges it.
+#include <atomic>
+#include <cstdlib>
+#include <condition_variable>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "checker.h"
+
+namespace cc {
+
+namespace {
+// Jobs per batch: enough to share, few enough to hold. CHECK_CERT_BATCH changes it (the
+// tests use tiny batches, so that many boundaries fall between a proof and its record's
+// structural checks); it changes how the work is shared, never the verdict.
+size_t batch_size() {
+  const char* e = std::getenv("CHECK_CERT_BATCH");
+  const long v = e ? std::atol(e) : 0;
+  return v >= 1 && v <= (1 << 20) ? size_t(v) : 1024;
+}
+}  // namespace
+
+struct ProofBatch::Worker {
+  std::unique_ptr<Evaluator> ev;
+  std::unique_ptr<Prover> pr;
+};
+
+struct ProofBatch::Job {
+  long record;
+  uint64_t limit;  // the work a sequential check may have done by the end of this job
+  Proof proof;
+  std::string failure;       // why the proof failed ("" if it held)
+  std::exception_ptr error;  // what it threw (the work limit, out of memory)
+  uint64_t work = 0;         // node evaluations it took
+};
+
+ProofBatch::ProofBatch(const Model& m, int threads, uint64_t work_before)
+    : work(work_before), prec_(mpfr_get_default_prec()), batch_(batch_size()) {
+  // Evaluators made here hold intervals of the certificate's precision; the helper threads
+  // set it as their own default for the temporaries they make (MPFR keeps it per thread).
+  for (int t = 0; t < std::max(1, threads); ++t) {
+    workers_.emplace_back(new Worker);
+    workers_.back()->ev.reset(new Evaluator(m));
+    workers_.back()->pr.reset(new Prover(*workers_.back()->ev));
+  }
+  for (int t = 1; t < int(workers_.size()); ++t) helpers_.emplace_back([this, t] { serve(t); });
+}
+
+ProofBatch::~ProofBatch() {
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    stop_ = true;
+  }
+  go_.notify_all();
+  for (std::thread& h : helpers_) h.join();
+}
+
+void ProofBatch::add(long record, uint64_t limit, Proof proof) {
+  jobs_.push_back(Job{record, limit, std::move(proof), {}, nullptr, 0});
+  if (jobs_.size() >= batch_) flush();
+}
+
+// Jobs by an atomic index, on worker t, until none is left.
+void ProofBatch::work_on(int t) {
+  Worker& w = *workers_[t];
+  for (size_t i; (i = next_.fetch_add(1)) < jobs_.size();) {
+    Job& j = jobs_[i];
+    // Stopped where a sequential check, having done `work` before this batch, would be
+    // stopped at the latest; the judgement below charges the jobs before it too.
+    w.ev->work = 0;
+    w.ev->work_limit = j.limit > work ? j.limit - work : 0;
+    try {
+      j.failure = j.proof(*w.pr);
+    } catch (...) {
+      j.error = std::current_exception();
+    }
+    j.work = w.ev->work;
+    j.proof = nullptr;  // the captured boxes are no longer needed
+  }
+}
+
+void ProofBatch::serve(int t) {
+  mpfr_set_default_prec(prec_);
+  uint64_t seen = 0;
+  for (;;) {
+    {
+      std::unique_lock<std::mutex> lock(m_);
+      go_.wait(lock, [&] { return stop_ || round_ != seen; });
+      if (stop_) break;
+      seen = round_;
+    }
+    work_on(t);
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      if (--busy_ == 0) done_.notify_one();
+    }
+  }
+  mpfr_free_cache();  // this thread's constants (π) are its own
+}
+
+void ProofBatch::flush() {
+  if (jobs_.empty()) return;
+  next_ = 0;
+  if (!helpers_.empty()) {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      busy_ = int(helpers_.size());
+      ++round_;
+    }
+    go_.notify_all();
+  }
+  work_on(0);
+  if (!helpers_.empty()) {
+    std::unique_lock<std::mutex> lock(m_);
+    done_.wait(lock, [&] { return busy_ == 0; });
+  }
+  std::vector<Job> jobs;
+  jobs.swap(jobs_);
+  for (Job& j : jobs) {
+    // Past its limit, a sequential check would have stopped inside this job, before any
+    // failure it found (a job's own cap above is looser: it does not count the jobs before
+    // it in this batch).
+    work += j.work;
+    if (work > j.limit)
+      rejected(j.record, "the check needs more work than the checker allows for its size");
+    if (j.error) std::rethrow_exception(j.error);
+    if (!j.failure.empty()) rejected(j.record, j.failure);
+  }
+}
+
+long ProofBatch::refutations() const {
+  long s = 0;
+  for (const auto& w : workers_) s += w->pr->refutations;
+  return s;
+}
+
+long ProofBatch::refute_boxes() const {
+  long s = 0;
+  for (const auto& w : workers_) s += w->pr->refute_boxes;
+  return s;
+}
+
+}  // namespace cc
