@@ -42,14 +42,15 @@ std::vector<std::pair<int, int>> brute_force(const cc::OutBoxes& R,
 
 // Boxes on a grid of cells (so that many touch), with random widths, in nv variables of
 // which those in `periodic` live in [-π, π].
-cc::OutBoxes random_boxes(std::mt19937& rng, int n, const std::vector<bool>& periodic) {
+cc::OutBoxes random_boxes(std::mt19937& rng, int n, const std::vector<bool>& periodic,
+                          int cells = 6) {
   cc::OutBoxes R;
   R.nv = int(periodic.size());
-  std::uniform_int_distribution<int> cell(0, 5);
+  std::uniform_int_distribution<int> cell(0, cells - 1);
   std::uniform_real_distribution<double> jitter(0.0, 0.3);
   for (int i = 0; i < n; ++i) {
     for (int v = 0; v < R.nv; ++v) {
-      const double scale = periodic[v] ? 2 * M_PI / 6 : 1.0;
+      const double scale = periodic[v] ? 2 * M_PI / cells : 1.0;
       const double origin = periodic[v] ? -M_PI : 0.0;
       const int c = cell(rng);
       R.lohi.push_back(origin + scale * (c - jitter(rng)));
@@ -94,6 +95,32 @@ TEST(CheckerGraph, SweepFindsExactlyThePairsOfTheRule) {
 }  // namespace
 
 namespace {
+
+// Boxes spread over 60 cells, a few of them 20 cells wide: the sweep cuts the second
+// variable into strips (four mean widths each) and sweeps each alone, and a pair that meets
+// in several strips must come from one of them only. Still exactly the pairs of the rule.
+TEST(CheckerGraph, StripsFindExactlyThePairsOfTheRule) {
+  cc::Ival two_pi;
+  mpfi_const_pi(two_pi);
+  mpfi_mul_ui(two_pi, two_pi, 2);
+  std::mt19937 rng(5);
+  for (const auto& periodic : std::vector<std::vector<bool>>{{false, false}, {true, false, false}}) {
+    cc::OutBoxes R = random_boxes(rng, 1500, periodic, 60);
+    for (int b = 0; b < 1500; b += 100) {  // wide boxes across many strips
+      double* x = &R.lohi[size_t(b) * 2 * R.nv + 2 * (R.nv - 1)];
+      x[1] = x[0] + 20;
+    }
+    std::vector<std::pair<int, int>> got;
+    const cc::NeighbourSweep sweep(R, periodic, two_pi);
+    sweep.run([&](int a, int b) { got.emplace_back(a, b); });
+    std::sort(got.begin(), got.end());
+    const size_t visited = got.size();
+    got.erase(std::unique(got.begin(), got.end()), got.end());
+    EXPECT_EQ(visited, got.size());  // non-periodic sweep variables: no pair twice
+    EXPECT_EQ(got, brute_force(R, periodic, two_pi));
+    EXPECT_GT(got.size(), periodic.size() == 2 ? 1500u : 100u) << "too few pairs to tell";
+  }
+}
 
 // Bound (11) by the book: per sign class, a union-find over the brute-force pairs.
 long brute_force_bound(const cc::OutBoxes& R, const std::vector<std::pair<int, int>>& M,

@@ -417,7 +417,11 @@ class NeighbourSweep {
   std::vector<int> slot_;  // per variable: its column in shifted_, -1 if not periodic
   // shifted_[(b·P + slot)·2 + (k > 0)]: the ends of b_v + 2πk, k = ±1, rounded outward.
   std::vector<std::array<double, 2>> shifted_;
-  std::vector<Item> items_;  // sorted by lo
+  int strip(double e) const;
+  double e_lo_ = 0, e_width_ = 1;  // strips of the second sweep variable e: [lo + t·w, ...)
+  int strips_ = 1;
+  std::vector<size_t> strip_start_;  // items_ of strip t: [strip_start_[t], strip_start_[t+1])
+  std::vector<Item> items_;          // by strip, then by lo
 };
 // Bound (11): Σ over sign vectors s of the number of components (of the boxes compatible
 // with s, joined by M) holding a solution box whose signs are all verified and equal s.

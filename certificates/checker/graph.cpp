@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 
 namespace cc {
@@ -80,6 +81,15 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
       e = v;
     }
   }
+  // Strips of e, four mean widths wide: each item goes into every strip its e-interval
+  // meets, and each strip is swept on its own, so that boxes far apart on e are never
+  // candidates (3-RPR at eps 1: 8.0e9 candidates on d, 3.0e8 of them meet on e).
+  if (e >= 0 && mean[e] > 0 && hhi[e] > hlo[e]) {
+    e_lo_ = hlo[e];
+    e_width_ = 4 * mean[e];
+    strips_ = int(std::max(1.0, std::min(65536.0, std::ceil((hhi[e] - hlo[e]) / e_width_))));
+  }
+  std::vector<Item> all;
   for (size_t b = 0; b < N; ++b)
     for (int k = periodic[d] ? -1 : 0; k <= (periodic[d] ? 1 : 0); ++k) {
       const double* s = k ? shifted_[(b * P + slot_[d]) * 2 + (k > 0)].data() : R.box(b) + 2 * d;
@@ -88,39 +98,59 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
         elo = R.box(b)[2 * e];
         ehi = R.box(b)[2 * e + 1];
       }
-      if (!k || (s[1] >= hlo[d] && s[0] <= hhi[d]))
-        items_.push_back({s[0], s[1], elo, ehi, int(b), k});
+      if (!k || (s[1] >= hlo[d] && s[0] <= hhi[d])) all.push_back({s[0], s[1], elo, ehi, int(b), k});
     }
-  std::sort(items_.begin(), items_.end(), [](const Item& x, const Item& y) { return x.lo < y.lo; });
+  std::sort(all.begin(), all.end(), [](const Item& x, const Item& y) { return x.lo < y.lo; });
+  // Counting sort by strip, stable: each strip's items stay sorted by lo.
+  strip_start_.assign(size_t(strips_) + 1, 0);
+  for (const Item& it : all)
+    for (int t = strip(it.elo); t <= strip(it.ehi); ++t) ++strip_start_[t + 1];
+  for (int t = 0; t < strips_; ++t) strip_start_[t + 1] += strip_start_[t];
+  items_.resize(strip_start_[strips_]);
+  std::vector<size_t> fill(strip_start_.begin(), strip_start_.end() - 1);
+  for (const Item& it : all)
+    for (int t = strip(it.elo); t <= strip(it.ehi); ++t) items_[fill[t]++] = it;
+}
+
+// The strip of e-coordinate x: monotone in x, so a pair that meets on e meets in the strip
+// of the larger of their lower ends, and in both boxes' strips.
+int NeighbourSweep::strip(double x) const {
+  if (strips_ == 1) return 0;
+  const double t = std::floor((x - e_lo_) / e_width_);
+  return t < 0 ? 0 : t >= strips_ - 1 ? strips_ - 1 : int(t);
 }
 
 size_t NeighbourSweep::run(const std::function<void(int, int)>& visit, size_t max_pairs) const {
   const int nv = R_.nv;
   const size_t P = shifted_.size() / (2 * std::max<size_t>(R_.size(), 1));
   size_t pairs = 0;
-  for (size_t i = 0; i < items_.size(); ++i)
-    for (size_t j = i + 1; j < items_.size() && items_[j].lo <= items_[i].hi; ++j) {
-      const Item &p = items_[i], &q = items_[j];
-      if (p.id == q.id || (p.k && q.k) || q.elo > p.ehi || p.elo > q.ehi) continue;
-      // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
-      // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
-      const int a = std::min(p.id, q.id);
-      const int b = std::max(p.id, q.id);
-      bool meet = true;
-      for (int v = 0; v < nv && meet; ++v) {
-        const double* x = R_.box(a) + 2 * v;
-        const double* y = R_.box(b) + 2 * v;
-        meet = x[0] <= y[1] && y[0] <= x[1];
-        for (int k = 0; k < 2 && !meet && slot_[v] >= 0; ++k) {
-          const std::array<double, 2>& s = shifted_[(size_t(b) * P + slot_[v]) * 2 + k];
-          meet = x[0] <= s[1] && s[0] <= x[1];
+  for (int t = 0; t < strips_; ++t) {
+    const size_t end = strip_start_[t + 1];
+    for (size_t i = strip_start_[t]; i < end; ++i)
+      for (size_t j = i + 1; j < end && items_[j].lo <= items_[i].hi; ++j) {
+        const Item &p = items_[i], &q = items_[j];
+        if (p.id == q.id || (p.k && q.k) || q.elo > p.ehi || p.elo > q.ehi) continue;
+        if (strip(std::max(p.elo, q.elo)) != t) continue;  // met in another strip too
+        // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
+        // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
+        const int a = std::min(p.id, q.id);
+        const int b = std::max(p.id, q.id);
+        bool meet = true;
+        for (int v = 0; v < nv && meet; ++v) {
+          const double* x = R_.box(a) + 2 * v;
+          const double* y = R_.box(b) + 2 * v;
+          meet = x[0] <= y[1] && y[0] <= x[1];
+          for (int k = 0; k < 2 && !meet && slot_[v] >= 0; ++k) {
+            const std::array<double, 2>& s = shifted_[(size_t(b) * P + slot_[v]) * 2 + k];
+            meet = x[0] <= s[1] && s[0] <= x[1];
+          }
         }
+        if (!meet) continue;
+        if (pairs >= max_pairs) throw std::length_error("neighbourhood graph");
+        ++pairs;
+        visit(a, b);
       }
-      if (!meet) continue;
-      if (pairs >= max_pairs) throw std::length_error("neighbourhood graph");
-      ++pairs;
-      visit(a, b);
-    }
+  }
   return pairs;
 }
 
