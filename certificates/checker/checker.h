@@ -347,7 +347,8 @@ class ProofBatch {
   ~ProofBatch();
   // Queues the proof of `record`; `limit` is the work the check may have done by its end.
   void add(long record, uint64_t limit, Proof proof);
-  // Runs the queued proofs; throws the rejection of the first that failed, in record order.
+  // Runs every queued proof; throws the rejection of the first that failed, in record
+  // order. After a failure has been thrown, does nothing (later proofs cannot come first).
   void flush();
   long refutations() const;
   long refute_boxes() const;
@@ -358,11 +359,15 @@ class ProofBatch {
   struct Job;
   void work_on(int t);
   void serve(int t);
+  void start();
+  void finish();
   const mpfr_prec_t prec_;
   const size_t batch_;  // jobs per batch
   std::vector<std::unique_ptr<Worker>> workers_;
-  std::vector<Job> jobs_;
+  std::vector<Job> jobs_;     // queued, being filled by the reader
+  std::vector<Job> running_;  // the batch the threads work on
   std::atomic<size_t> next_{0};
+  bool failed_ = false;  // a proof failed: it is the verdict, nothing after it is judged
   std::vector<std::thread> helpers_;
   std::mutex m_;
   std::condition_variable go_, done_;

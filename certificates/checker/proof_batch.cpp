@@ -64,18 +64,23 @@ ProofBatch::~ProofBatch() {
   for (std::thread& h : helpers_) h.join();
 }
 
+// Queues a job; a full batch starts on the helpers once the one before it is judged, and
+// the reader goes on filling the next one meanwhile.
 void ProofBatch::add(long record, uint64_t limit, Proof proof) {
+  if (failed_) return;
   jobs_.push_back(Job{record, limit, std::move(proof), {}, nullptr, 0});
-  if (jobs_.size() >= batch_) flush();
+  if (jobs_.size() < batch_) return;
+  finish();
+  start();
 }
 
-// Jobs by an atomic index, on worker t, until none is left.
+// Jobs of the running batch by an atomic index, on worker t, until none is left.
 void ProofBatch::work_on(int t) {
   Worker& w = *workers_[t];
-  for (size_t i; (i = next_.fetch_add(1)) < jobs_.size();) {
-    Job& j = jobs_[i];
+  for (size_t i; (i = next_.fetch_add(1)) < running_.size();) {
+    Job& j = running_[i];
     // Stopped where a sequential check, having done `work` before this batch, would be
-    // stopped at the latest; the judgement below charges the jobs before it too.
+    // stopped at the latest; the judgement charges the jobs before it too.
     w.ev->work = 0;
     w.ev->work_limit = j.limit > work ? j.limit - work : 0;
     try {
@@ -107,34 +112,51 @@ void ProofBatch::serve(int t) {
   mpfr_free_cache();  // this thread's constants (π) are its own
 }
 
-void ProofBatch::flush() {
-  if (jobs_.empty()) return;
+// The queued jobs become the running batch, on the helpers (without helpers, finish()
+// runs it).
+void ProofBatch::start() {
+  running_.swap(jobs_);
   next_ = 0;
-  if (!helpers_.empty()) {
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      busy_ = int(helpers_.size());
-      ++round_;
-    }
-    go_.notify_all();
+  if (helpers_.empty() || running_.empty()) return;
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    busy_ = int(helpers_.size());
+    ++round_;
   }
+  go_.notify_all();
+}
+
+// Completes the running batch (this thread helps), then judges it in record order.
+void ProofBatch::finish() {
+  if (running_.empty()) return;
   work_on(0);
   if (!helpers_.empty()) {
     std::unique_lock<std::mutex> lock(m_);
     done_.wait(lock, [&] { return busy_ == 0; });
   }
   std::vector<Job> jobs;
-  jobs.swap(jobs_);
+  jobs.swap(running_);
   for (Job& j : jobs) {
     // Past its limit, a sequential check would have stopped inside this job, before any
     // failure it found (a job's own cap above is looser: it does not count the jobs before
     // it in this batch).
     work += j.work;
-    if (work > j.limit)
-      rejected(j.record, "the check needs more work than the checker allows for its size");
-    if (j.error) std::rethrow_exception(j.error);
-    if (!j.failure.empty()) rejected(j.record, j.failure);
+    std::string why = j.failure;
+    if (work > j.limit) why = "the check needs more work than the checker allows for its size";
+    if (why.empty() && !j.error) continue;
+    // The first failure in record order: the queued jobs come after it and are dropped.
+    failed_ = true;
+    jobs_.clear();
+    if (!why.empty()) rejected(j.record, why);
+    std::rethrow_exception(j.error);
   }
+}
+
+void ProofBatch::flush() {
+  if (failed_) return;
+  finish();
+  start();
+  finish();
 }
 
 long ProofBatch::refutations() const {
