@@ -1,8 +1,8 @@
 // checker.h — every declaration of check_cert, the independent checker of the certificates
 // of `aspects solve` (FORMAT.md is the specification). It shares no code with core/ or
 // proofs/: its own reader (cert_reader.cpp), model parser (model.cpp), MPFI evaluator
-// (eval.cpp), proofs on one box (proofs.cpp), graph and bound (graph.cpp), and the record
-// by record check (main.cpp).
+// (eval.cpp), proofs on one box (proofs.cpp), graph and bound (graph.cpp), the proofs on
+// T threads (proof_batch.cpp), and the record by record check (main.cpp).
 #pragma once
 
 #include <mpfi.h>
@@ -87,7 +87,7 @@ class LineReader {
 struct CheckOptions {
   bool quiet = false;          // no statistics on stderr
   bool trust_factors = false;  // accept a bound that rests on user-supplied factors
-  int threads = 1;             // threads for the interval proofs (proof_batch.cpp)
+  int threads = 0;             // threads for the interval proofs (0: one per core)
 };
 
 // What a check found; `verdict` is VERIFIED, UNCHECKED, REJECTED or MALFORMED.
@@ -361,6 +361,7 @@ class ProofBatch {
   void serve(int t);
   void start();
   void finish();
+  void stop_helpers();
   const mpfr_prec_t prec_;
   const size_t batch_;  // jobs per batch
   std::vector<std::unique_ptr<Worker>> workers_;

@@ -1,8 +1,10 @@
 // main.cpp — `check_cert FILE.cert`: reads a certificate of `aspects solve` record by
 // record and re-verifies every claim with the checker's own parser, evaluator and proofs
-// (FORMAT.md is the specification; exit statuses in checker.h). It keeps only what
-// later sections need: the output boxes as doubles with their verified signs, the
-// union-find of verified links and the CSNC of each box.
+// (FORMAT.md is the specification; exit statuses in checker.h). Each record's structure
+// is checked here, in order; its interval proofs are queued (proof_batch.cpp) and judged in
+// record order. It keeps only what later sections need: the output boxes as doubles with
+// their claimed signs (each proved by a queued proof), the union-find of the links and the
+// CSNC of each box.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -696,7 +698,13 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
       work_base = std::max(10, std::min(40, std::atoi(e)));
     header();
-    threads = std::max(1, o.threads);
+    threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    // Each thread holds an evaluator of up to 2^22 units (read_model): at most 2^25 units in
+    // all, so that many threads on a large model cannot exhaust memory. Fewer threads, never
+    // another verdict.
+    const double units = double(m.nodes.size()) * double(m.vars.size() + 5) *
+                         double(mpfr_get_default_prec() / 64 + 2);
+    threads = int(std::max(1.0, std::min(double(threads), double(1 << 25) / units)));
     batch.reset(new ProofBatch(m, threads, ev->work));
     try {
       body(o);
@@ -838,8 +846,8 @@ const char* const kHelp =
     "Re-verifies a certificate of `aspects solve` (certificates/FORMAT.md).\n"
     "  --json           print the verdict as one JSON object (for scripts)\n"
     "  --trust-factors  accept a lower bound that rests on user-supplied factors\n"
-    "  --threads N      run the interval proofs on N threads (default 1); the verdict,\n"
-    "                   the record it names and its reason do not depend on N\n"
+    "  --threads N      run the interval proofs on N threads (default 0: one per core);\n"
+    "                   the verdict, the record it names and its reason do not depend on N\n"
     "Exit 0: verified; 1: rejected (or out of memory); 2: malformed or usage error;\n"
     "3: every proof verified, but the claimed lower bound rests on a user-supplied\n"
     "   `factor` the checker cannot verify (not given --trust-factors).\n";
@@ -872,9 +880,9 @@ int main(int argc, char** argv) {
       std::string v = a.size() > 9 ? a.substr(10) : (i + 1 < argc ? argv[++i] : "");
       char* end = nullptr;
       const long t = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end || t < 1 || t > 256) {
-        std::fprintf(stderr, "check_cert: --threads needs a number from 1 to 256, not '%s'\n",
-                     v.c_str());
+      if (v.empty() || *end || t < 0 || t > 256) {
+        std::fprintf(stderr, "check_cert: --threads needs a number from 0 (one per core) to 256, "
+                             "not '%s'\n", v.c_str());
         return kMalformed;
       }
       o.threads = int(t);

@@ -52,16 +52,24 @@ ProofBatch::ProofBatch(const Model& m, int threads, uint64_t work_before)
     workers_.back()->ev.reset(new Evaluator(m));
     workers_.back()->pr.reset(new Prover(*workers_.back()->ev));
   }
-  for (int t = 1; t < int(workers_.size()); ++t) helpers_.emplace_back([this, t] { serve(t); });
+  try {
+    for (int t = 1; t < int(workers_.size()); ++t) helpers_.emplace_back([this, t] { serve(t); });
+  } catch (...) {  // a thread that cannot start: stop those that did, then say so
+    stop_helpers();
+    throw;
+  }
 }
 
-ProofBatch::~ProofBatch() {
+ProofBatch::~ProofBatch() { stop_helpers(); }
+
+void ProofBatch::stop_helpers() {
   {
     std::lock_guard<std::mutex> lock(m_);
     stop_ = true;
   }
   go_.notify_all();
   for (std::thread& h : helpers_) h.join();
+  helpers_.clear();
 }
 
 // Queues a job; a full batch starts on the helpers once the one before it is judged, and
