@@ -416,7 +416,8 @@ class NeighbourSweep {
 
  private:
   struct Item {
-    double lo, hi, elo, ehi;  // on d (shifted by 2πk), and on e (all of R if there is none)
+    double lo, hi;   // on d, shifted by 2πk
+    float elo, ehi;  // on e, rounded outward (the whole line if there is no e)
     int id, k;
   };
   const OutBoxes& R_;

@@ -89,27 +89,38 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
     e_width_ = 4 * mean[e];
     strips_ = int(std::max(1.0, std::min(65536.0, std::ceil((hhi[e] - hlo[e]) / e_width_))));
   }
-  std::vector<Item> all;
-  for (size_t b = 0; b < N; ++b)
-    for (int k = periodic[d] ? -1 : 0; k <= (periodic[d] ? 1 : 0); ++k) {
-      const double* s = k ? shifted_[(b * P + slot_[d]) * 2 + (k > 0)].data() : R.box(b) + 2 * d;
-      double elo = -1e308, ehi = 1e308;
-      if (e >= 0) {
-        elo = R.box(b)[2 * e];
-        ehi = R.box(b)[2 * e + 1];
+  // The items, made twice (to count each strip's, then to place them) rather than held
+  // twice: e's ends as floats rounded outward, a superset of the true overlaps on e, used
+  // alike for the strips and for the test in run().
+  const auto each_item = [&](const std::function<void(const Item&)>& put) {
+    for (size_t b = 0; b < N; ++b)
+      for (int k = periodic[d] ? -1 : 0; k <= (periodic[d] ? 1 : 0); ++k) {
+        const double* s = k ? shifted_[(b * P + slot_[d]) * 2 + (k > 0)].data() : R.box(b) + 2 * d;
+        if (k && (s[1] < hlo[d] || s[0] > hhi[d])) continue;  // a copy that meets no box
+        float elo = -HUGE_VALF, ehi = HUGE_VALF;
+        if (e >= 0) {
+          const double lo = R.box(b)[2 * e], hi = R.box(b)[2 * e + 1];
+          elo = float(lo);
+          ehi = float(hi);
+          if (double(elo) > lo) elo = std::nextafter(elo, -HUGE_VALF);
+          if (double(ehi) < hi) ehi = std::nextafter(ehi, HUGE_VALF);
+        }
+        put({s[0], s[1], elo, ehi, int(b), k});
       }
-      if (!k || (s[1] >= hlo[d] && s[0] <= hhi[d])) all.push_back({s[0], s[1], elo, ehi, int(b), k});
-    }
-  std::sort(all.begin(), all.end(), [](const Item& x, const Item& y) { return x.lo < y.lo; });
-  // Counting sort by strip, stable: each strip's items stay sorted by lo.
+  };
   strip_start_.assign(size_t(strips_) + 1, 0);
-  for (const Item& it : all)
+  each_item([&](const Item& it) {
     for (int t = strip(it.elo); t <= strip(it.ehi); ++t) ++strip_start_[t + 1];
+  });
   for (int t = 0; t < strips_; ++t) strip_start_[t + 1] += strip_start_[t];
   items_.resize(strip_start_[strips_]);
   std::vector<size_t> fill(strip_start_.begin(), strip_start_.end() - 1);
-  for (const Item& it : all)
+  each_item([&](const Item& it) {
     for (int t = strip(it.elo); t <= strip(it.ehi); ++t) items_[fill[t]++] = it;
+  });
+  for (int t = 0; t < strips_; ++t)
+    std::sort(items_.begin() + long(strip_start_[t]), items_.begin() + long(strip_start_[t + 1]),
+              [](const Item& x, const Item& y) { return x.lo < y.lo; });
 }
 
 // The strip of e-coordinate x: monotone in x, so a pair that meets on e meets in the strip
@@ -130,7 +141,7 @@ size_t NeighbourSweep::run(const std::function<void(int, int)>& visit, size_t ma
       for (size_t j = i + 1; j < end && items_[j].lo <= items_[i].hi; ++j) {
         const Item &p = items_[i], &q = items_[j];
         if (p.id == q.id || (p.k && q.k) || q.elo > p.ehi || p.elo > q.ehi) continue;
-        if (strip(std::max(p.elo, q.elo)) != t) continue;  // met in another strip too
+        if (strip(double(std::max(p.elo, q.elo))) != t) continue;  // met in another strip too
         // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
         // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
         const int a = std::min(p.id, q.id);
