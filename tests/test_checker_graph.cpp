@@ -122,6 +122,29 @@ TEST(CheckerGraph, StripsFindExactlyThePairsOfTheRule) {
   }
 }
 
+// Ends beyond the floats' range (the strips keep e's ends as floats rounded outward): a
+// box reaching 1e39 or -1e300 still meets exactly the boxes of the rule.
+TEST(CheckerGraph, EndsBeyondTheFloatsRange) {
+  cc::Ival two_pi;
+  mpfi_const_pi(two_pi);
+  mpfi_mul_ui(two_pi, two_pi, 2);
+  std::mt19937 rng(9);
+  const std::vector<bool> periodic = {false, false};
+  cc::OutBoxes R = random_boxes(rng, 600, periodic, 60);
+  for (int v = 0; v < 2; ++v)
+    for (int b = v; b < 600; b += 50) {
+      double* x = &R.lohi[size_t(b) * 4 + 2 * v];
+      if (b % 100 < 50) x[1] = 1e39;
+      else x[0] = -1e300;
+    }
+  std::vector<std::pair<int, int>> got;
+  const cc::NeighbourSweep sweep(R, periodic, two_pi);
+  sweep.run([&](int a, int b) { got.emplace_back(a, b); });
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, brute_force(R, periodic, two_pi));
+  EXPECT_GT(got.size(), 600u);
+}
+
 // Bound (11) by the book: per sign class, a union-find over the brute-force pairs.
 long brute_force_bound(const cc::OutBoxes& R, const std::vector<std::pair<int, int>>& M,
                        uint32_t full) {

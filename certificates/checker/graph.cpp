@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <numeric>
 
@@ -25,6 +26,14 @@ void UnionFind::unite(int a, int b) {
   a = find(a);
   b = find(b);
   if (a != b) parent[std::max(a, b)] = std::min(a, b);
+}
+
+// The largest float <= x (a double beyond the floats' range has no float conversion).
+static float float_down(double x) {
+  if (x < -double(FLT_MAX)) return -HUGE_VALF;
+  if (x > double(FLT_MAX)) return FLT_MAX;
+  float f = float(x);
+  return double(f) > x ? std::nextafter(f, -HUGE_VALF) : f;
 }
 
 void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x) {
@@ -99,11 +108,8 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
         if (k && (s[1] < hlo[d] || s[0] > hhi[d])) continue;  // a copy that meets no box
         float elo = -HUGE_VALF, ehi = HUGE_VALF;
         if (e >= 0) {
-          const double lo = R.box(b)[2 * e], hi = R.box(b)[2 * e + 1];
-          elo = float(lo);
-          ehi = float(hi);
-          if (double(elo) > lo) elo = std::nextafter(elo, -HUGE_VALF);
-          if (double(ehi) < hi) ehi = std::nextafter(ehi, HUGE_VALF);
+          elo = float_down(R.box(b)[2 * e]);
+          ehi = -float_down(-R.box(b)[2 * e + 1]);
         }
         put({s[0], s[1], elo, ehi, int(b), k});
       }
