@@ -42,7 +42,6 @@ struct Checker {
   Verdict& out;
   Model m;
   std::unique_ptr<Evaluator> ev;  // the header's constants; the proofs run in `batch`
-  std::unique_ptr<ProofBatch> batch;
   int threads = 1;
   int n = 0, nv = 0, p = 0;    // equations, variables, factors
   int version = 0;             // 1: P2 without column weights (D = 1); 2: with DX, DQ
@@ -59,6 +58,9 @@ struct Checker {
   std::tuple<long, long, long> last_assembly{-1, -1, -1};  // (CSNC, A, B)
   int work_base = 29;
   size_t pairs_ = 0;  // pairs of M, for the statistics
+  // Last, so that it is destroyed first: its helper threads finish the proofs they hold
+  // (which read the members above) before anything they read is gone, whatever was thrown.
+  std::unique_ptr<ProofBatch> batch;
 
   Checker(FILE* f, Verdict& v) : rd(f), out(v) {}
   long rec() const { return rd.record(); }
