@@ -40,6 +40,14 @@ std::vector<std::pair<int, int>> brute_force(const cc::OutBoxes& R,
   return out;
 }
 
+// 2π, enclosed at the default precision.
+cc::Ival make_two_pi() {
+  cc::Ival two_pi;
+  mpfi_const_pi(two_pi);
+  mpfi_mul_ui(two_pi, two_pi, 2);
+  return two_pi;
+}
+
 // Boxes on a grid of cells (so that many touch), with random widths, in nv variables of
 // which those in `periodic` live in [-π, π].
 cc::OutBoxes random_boxes(std::mt19937& rng, int n, const std::vector<bool>& periodic,
@@ -64,9 +72,7 @@ cc::OutBoxes random_boxes(std::mt19937& rng, int n, const std::vector<bool>& per
 }
 
 TEST(CheckerGraph, SweepFindsExactlyThePairsOfTheRule) {
-  cc::Ival two_pi;
-  mpfi_const_pi(two_pi);
-  mpfi_mul_ui(two_pi, two_pi, 2);
+  const cc::Ival two_pi = make_two_pi();
   std::mt19937 rng(7);
   const std::vector<std::vector<bool>> kinds = {
       {false, false, false}, {false, false, true}, {true, false, true}, {true, true}, {true}};
@@ -100,11 +106,10 @@ namespace {
 // variable into strips (four mean widths each) and sweeps each alone, and a pair that meets
 // in several strips must come from one of them only. Still exactly the pairs of the rule.
 TEST(CheckerGraph, StripsFindExactlyThePairsOfTheRule) {
-  cc::Ival two_pi;
-  mpfi_const_pi(two_pi);
-  mpfi_mul_ui(two_pi, two_pi, 2);
+  const cc::Ival two_pi = make_two_pi();
   std::mt19937 rng(5);
-  for (const auto& periodic : std::vector<std::vector<bool>>{{false, false}, {true, false, false}}) {
+  const std::vector<std::vector<bool>> kinds = {{false, false}, {true, false, false}};
+  for (const auto& periodic : kinds) {
     cc::OutBoxes R = random_boxes(rng, 1500, periodic, 60);
     for (int b = 0; b < 1500; b += 100) {  // wide boxes across many strips
       double* x = &R.lohi[size_t(b) * 2 * R.nv + 2 * (R.nv - 1)];
@@ -125,9 +130,7 @@ TEST(CheckerGraph, StripsFindExactlyThePairsOfTheRule) {
 // Ends beyond the floats' range (the strips keep e's ends as floats rounded outward): a
 // box reaching 1e39 or -1e300 still meets exactly the boxes of the rule.
 TEST(CheckerGraph, EndsBeyondTheFloatsRange) {
-  cc::Ival two_pi;
-  mpfi_const_pi(two_pi);
-  mpfi_mul_ui(two_pi, two_pi, 2);
+  const cc::Ival two_pi = make_two_pi();
   std::mt19937 rng(9);
   const std::vector<bool> periodic = {false, false};
   cc::OutBoxes R = random_boxes(rng, 600, periodic, 60);
@@ -176,9 +179,7 @@ long brute_force_bound(const cc::OutBoxes& R, const std::vector<std::pair<int, i
 // class) equals the bound by the book, with more than 32 classes so that several groups
 // run, and with some factors left out of `use`.
 TEST(CheckerGraph, StreamedBoundEqualsTheBoundByTheBook) {
-  cc::Ival two_pi;
-  mpfi_const_pi(two_pi);
-  mpfi_mul_ui(two_pi, two_pi, 2);
+  const cc::Ival two_pi = make_two_pi();
   std::mt19937 rng(11);
   const std::vector<bool> periodic = {false, true, false};
   std::uniform_int_distribution<int> sign(0, 5);
@@ -216,9 +217,7 @@ TEST(CheckerGraph, StreamedBoundEqualsTheBoundByTheBook) {
 
 // Beyond the pair limit the sweep stops with std::length_error.
 TEST(CheckerGraph, PairLimitStopsTheSweep) {
-  cc::Ival two_pi;
-  mpfi_const_pi(two_pi);
-  mpfi_mul_ui(two_pi, two_pi, 2);
+  const cc::Ival two_pi = make_two_pi();
   std::mt19937 rng(3);
   cc::OutBoxes R = random_boxes(rng, 300, {false, false});
   const cc::NeighbourSweep sweep(R, {false, false}, two_pi);

@@ -212,7 +212,10 @@ bool exactly_one_period(const Model& m, const Var& v);
 // forward-mode interval AD for the Jacobians, and HC4-Revise.
 enum class Mode { Proof, Refute, Truth };
 
-// Thrown when a check needs more work than the checker allows (Evaluator::work_limit).
+// Thrown when a check needs more work than the checker allows (Evaluator::work_limit);
+// the reason of the rejection, also when the batch of proofs finds its limit passed.
+inline constexpr char kTooMuchWork[] =
+    "the check needs more work than the checker allows for its size";
 struct WorkLimit : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -250,7 +253,7 @@ class Evaluator {
   void charge(size_t nodes) {
     work += nodes;
     if (work > work_limit)
-      throw WorkLimit("the check needs more work than the checker allows for its size");
+      throw WorkLimit(kTooMuchWork);
   }
   int apply(int id, Ival& r, const Ival* a, const Ival* b);
   int truth(int formula) const;

@@ -75,15 +75,13 @@ struct Checker {
   // evaluation weighted by the precision (prec/64 + 2 limbs). A hostile certificate (a model
   // of 10^5 nodes, refutations that bisect 4096 boxes) is stopped within minutes, not days.
   // CHECK_CERT_WORK_BASE (log2 of the base) changes how long it may work, never the verdict.
+  // Each queued proof carries the limit of its record; the header's own evaluations (the
+  // declared bounds) are not limited.
   uint64_t work_limit() const {
     const uint64_t weight = uint64_t(mpfr_get_default_prec() / 64 + 2);
     const uint64_t base = uint64_t(1) << work_base;
     const uint64_t per_byte = uint64_t(1) << 10;
     return (base + per_byte * rd.bytes()) / weight;
-  }
-  void next_record() {
-    rd.next();
-    ev->work_limit = work_limit();
   }
   // Queues a proof of the record read last (proof_batch.cpp): it runs later, maybe on
   // another thread, so it captures what it needs by value.
@@ -254,14 +252,14 @@ struct Checker {
   void tree() {
     std::vector<Box> stack{root};
     for (;;) {
-      next_record();
+      rd.next();
       if (rd.kind() == "end-tree") break;
       if (stack.empty()) malformed(rec(), "expected 'end-tree': the search tree is complete");
       Box cell = std::move(stack.back());
       stack.pop_back();
       while (rd.kind() == "P") {
         contraction(cell);
-        next_record();
+        rd.next();
       }
       const std::string k(rd.kind());
       if (k == "B") {
@@ -369,7 +367,8 @@ struct Checker {
     // malformed is rejected for P1, as when the proofs ran in line.
     prove([=](Prover& pr) {
       pr.load(cell.data());
-      std::string why = unique_zero(pr, "P1", Q, C, img, "the Hansen-Sengupta image is not inside IMAGE");
+      std::string why =
+          unique_zero(pr, "P1", Q, C, img, "the Hansen-Sengupta image is not inside IMAGE");
       if (!why.empty()) return why;
       pr.load(B.data());
       if (const char* w = pr.regular(CX.data(), CQ.data(), DX.data(), DQ.data()))
@@ -462,7 +461,7 @@ struct Checker {
     const int64_t total = rd.require({head}, 1).integer();
     if (total < 0) malformed(rec(), "negative count");
     for (int64_t i = 0; i < total; ++i) {
-      next_record();
+      rd.next();
       if (rd.kind() != kind) {
         const std::string announced = " (" + std::to_string(total) + " announced)";
         malformed(rec(), std::string("expected a ") + kind + " record" + announced);

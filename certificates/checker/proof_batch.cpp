@@ -149,13 +149,13 @@ void ProofBatch::finish() {
     // failure it found (a job's own cap above is looser: it does not count the jobs before
     // it in this batch).
     work += j.work;
-    std::string why = j.failure;
-    if (work > j.limit) why = "the check needs more work than the checker allows for its size";
-    if (why.empty() && !j.error) continue;
+    const bool over = work > j.limit;
+    if (!over && j.failure.empty() && !j.error) continue;
     // The first failure in record order: the queued jobs come after it and are dropped.
     failed_ = true;
     jobs_.clear();
-    if (!why.empty()) rejected(j.record, why);
+    if (over) rejected(j.record, kTooMuchWork);
+    if (!j.failure.empty()) rejected(j.record, j.failure);
     std::rethrow_exception(j.error);
   }
 }
