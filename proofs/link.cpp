@@ -2,15 +2,6 @@
 
 namespace aspects {
 
-void LinkRecords::push(const LinkProof& p) {
-  for (double x : p.witness) data_.push_back(x);
-  for (const auto& q : p.existence.inflated) {
-    data_.push_back(q.lo_down());  // exact: the iterate has double endpoints
-    data_.push_back(q.hi_up());
-  }
-  for (double c : p.existence.C) data_.push_back(c);
-}
-
 bool inner_intersection(double alo, double ahi, double blo, double bhi, int k, double& lo,
                         double& hi) {
   if (k != 0) {
