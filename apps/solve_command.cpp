@@ -272,8 +272,9 @@ int run_solve(const SolveOptions& opts) {
   if (!o.out_dir.empty()) {
     std::filesystem::create_directories(o.out_dir);
     if (!o.no_cert) {
-      cert = std::make_unique<CertificateWriter>(o.out_dir + "/aspects.cert", model, o.prec,
-                                                 o.tau, o.eps);
+      cert = std::make_unique<CertificateWriter>(
+          o.out_dir + (o.compress_cert ? "/aspects.cert.zst" : "/aspects.cert"), model, o.prec,
+          o.tau, o.eps, o.compress_cert);
       cfg.certificate = cert.get();
     }
   }

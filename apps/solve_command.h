@@ -17,6 +17,7 @@ struct SolveOptions {
   int threads = 0;  // 0: one per core
   bool progress = false;
   bool no_cert = false;
+  bool compress_cert = false;  // aspects.cert.zst instead of aspects.cert
   bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
   bool quiet = false;
   bool mpfi_only = false;  // no double fast path at 53 bits (core/interval.h)

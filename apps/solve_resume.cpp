@@ -63,8 +63,8 @@ int remove_stale_temporaries(const std::string& dir) {
     size_t at = name.find(".tmp.");
     if (at == std::string::npos) continue;
     const std::string base = name.substr(0, at);
-    if (base != "aspects.cert" && base != kCheckpointName && base != "boxes.csv" &&
-        base != "summary.json" && base != "aspects.idx")
+    if (base != "aspects.cert" && base != "aspects.cert.zst" && base != kCheckpointName &&
+        base != "boxes.csv" && base != "summary.json" && base != "aspects.idx")
       continue;
     char* end = nullptr;
     long pid = std::strtol(name.c_str() + at + 5, &end, 10);

@@ -46,8 +46,9 @@ class TreeRecordFile : public TreeSink {
 
 class CertificateWriter : public CertificateSink {
  public:
+  // compress: the file is one zstd frame (certificates/compressed_output.h).
   CertificateWriter(const std::string& path, const Model& model, long precision, double tau,
-                    double eps);
+                    double eps, bool compress = false);
   ~CertificateWriter() override;
   CertificateWriter(const CertificateWriter&) = delete;
   CertificateWriter& operator=(const CertificateWriter&) = delete;
@@ -64,7 +65,7 @@ class CertificateWriter : public CertificateSink {
 
   // Links, CSNCs and claims; then closes and renames the file into place.
   void finish(const Model& model, const AspectsResult& result);
-  long bytes() const { return bytes_; }
+  long bytes() const { return bytes_; }  // of the text, before any compression
 
  private:
   void line(const std::string& s);
@@ -81,6 +82,7 @@ class CertificateWriter : public CertificateSink {
   int p_ = 0, n_ = 0;
   long lines_ = 0, leaves_ = 0, bytes_ = 0;
   bool finished_ = false;
+  bool compressed_ = false;
 };
 
 }  // namespace aspects

@@ -9,5 +9,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$work"
 # shellcheck disable=SC2086 # FLAGS is a list of options
 clang++ -std=c++17 $flags -DCHECK_CERT_NO_MAIN -I"$here" "$here/fuzz_cert_reader.cpp" "$here/main.cpp" \
-  "$here/cert_reader.cpp" "$here/model.cpp" "$here/eval.cpp" "$here/proofs.cpp" "$here/graph.cpp" "$here/proof_batch.cpp" -pthread \
-  -lmpfi -lmpfr -lgmp -lcrypto -o "$work/fuzz_cert_reader"
+  "$here/cert_reader.cpp" "$here/model.cpp" "$here/eval.cpp" "$here/proofs.cpp" "$here/graph.cpp" "$here/proof_batch.cpp" \
+  "$here/compressed_input.cpp" -pthread \
+  -lmpfi -lmpfr -lgmp -lcrypto -lzstd -o "$work/fuzz_cert_reader"

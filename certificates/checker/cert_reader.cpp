@@ -33,7 +33,10 @@ std::string sha256_hex(const std::string& bytes) {
   return s;
 }
 
-LineReader::LineReader(FILE* f) : f_(f) {
+static const char kUnreadable[] =
+    "cannot read the file (a read error, or compressed data corrupt or truncated)";
+
+LineReader::LineReader(FILE* f) : f_(decompressed(f)) {
   md_ = EVP_MD_CTX_new();
   EVP_DigestInit_ex(md_, EVP_sha256(), nullptr);
 }
@@ -47,6 +50,8 @@ LineReader::~LineReader() {
 LineReader& LineReader::next() {
   ssize_t n = getline(&line_buf_, &line_cap_, f_);
   ++line_;
+  if (std::ferror(f_))  // also after a partial line
+    malformed(line_, kUnreadable);
   if (n <= 0) malformed(line_, "unexpected end of file");
   bytes_ += uint64_t(n);
   EVP_DigestUpdate(md_, line_buf_, size_t(n));
@@ -92,6 +97,8 @@ std::string LineReader::raw(size_t n) {
 
 void LineReader::expect_eof() {
   if (std::fgetc(f_) != EOF) malformed(line_ + 1, "content after 'end'");
+  // A compressed file is whole only once its frame's end and checksum were read.
+  if (std::ferror(f_)) malformed(line_ + 1, kUnreadable);
 }
 
 std::string LineReader::file_sha256() { return hex_digest(md_); }

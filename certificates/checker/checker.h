@@ -44,9 +44,13 @@ std::string sha256_hex(const std::string& bytes);
 // A canonical decimal integer (FORMAT.md); `rec` is the record named in the error.
 int64_t parse_int(std::string_view s, long rec);
 
+// f itself, or, if f holds a zstd stream (compressed_input.cpp), a stream of its
+// decompressed bytes that owns f. A corrupt or truncated stream reads as a read error.
+FILE* decompressed(FILE* f);
+
 class LineReader {
  public:
-  explicit LineReader(FILE* f);  // takes ownership of f
+  explicit LineReader(FILE* f);  // takes ownership of f, and reads it through decompressed()
   ~LineReader();
   // Reads the next record and splits it into fields; checks the lexical rules.
   LineReader& next();
