@@ -124,6 +124,20 @@ TEST(CheckerGraph, StripsFindExactlyThePairsOfTheRule) {
     EXPECT_EQ(visited, got.size());  // non-periodic sweep variables: no pair twice
     EXPECT_EQ(got, brute_force(R, periodic, two_pi));
     EXPECT_GT(got.size(), periodic.size() == 2 ? 1500u : 100u) << "too few pairs to tell";
+    // Shifted ends are held only for the boxes whose shifted copy meets the hull.
+    size_t seam = 0;
+    if (periodic[0]) {
+      double hlo = 1e300, hhi = -1e300;
+      for (int b = 0; b < 1500; ++b) {
+        hlo = std::min(hlo, R.box(b)[0]);
+        hhi = std::max(hhi, R.box(b)[1]);
+      }
+      for (int b = 0; b < 1500; ++b)
+        seam += R.box(b)[0] + 2 * M_PI <= hhi || R.box(b)[1] - 2 * M_PI >= hlo;
+      EXPECT_GT(seam, 10u);
+      EXPECT_LT(seam, 150u);
+    }
+    EXPECT_EQ(sweep.seam_boxes(), seam);
   }
 }
 

@@ -420,17 +420,29 @@ class NeighbourSweep {
   // Visits every pair of M and returns how many it visited. Throws std::length_error beyond
   // `max_pairs` pairs: boxes that all overlap (one IMAGE for many cells) make M quadratic.
   size_t run(const std::function<void(int, int)>& visit, size_t max_pairs = SIZE_MAX) const;
+  // Boxes whose shifted ends are held: those whose copy shifted by ±2π meets the hull.
+  size_t seam_boxes() const { return P_ ? shifted_.size() / (2 * P_) : 0; }
 
  private:
+  // Ends as floats rounded outward: a superset of the true overlaps, which run() then
+  // tests on the boxes' doubles (24 bytes an item instead of 32).
   struct Item {
-    double lo, hi;   // on d, shifted by 2πk
-    float elo, ehi;  // on e, rounded outward (the whole line if there is no e)
+    float lo, hi;    // on d, shifted by 2πk
+    float elo, ehi;  // on e (the whole line if there is no e)
     int id, k;
   };
   const OutBoxes& R_;
-  std::vector<int> slot_;  // per variable: its column in shifted_, -1 if not periodic
-  // shifted_[(b·P + slot)·2 + (k > 0)]: the ends of b_v + 2πk, k = ±1, rounded outward.
+  std::vector<int> slot_;  // per variable: its column in a row of shifted_, -1 if not periodic
+  // Only a box whose shifted copy meets the hull of the boxes on some periodic variable (a
+  // box on a seam) has a row: row_[b] (-1: none), and shifted_[(row·P + slot)·2 + (k > 0)]
+  // holds the ends of b_v + 2πk, k = ±1, rounded outward. A copy that misses the hull
+  // meets no box.
+  std::vector<int32_t> row_;
   std::vector<std::array<double, 2>> shifted_;
+  const std::array<double, 2>* shifted(int b, int v, int k) const {
+    return row_[b] < 0 ? nullptr : &shifted_[(size_t(row_[b]) * P_ + slot_[v]) * 2 + (k > 0)];
+  }
+  size_t P_ = 0;  // periodic variables
   int strip(double e) const;
   double e_lo_ = 0, e_width_ = 1;  // strips of the second sweep variable e: [lo + t·w, ...)
   int strips_ = 1;
