@@ -56,14 +56,17 @@ cc::OutBoxes random_boxes(std::mt19937& rng, int n, const std::vector<bool>& per
   R.nv = int(periodic.size());
   std::uniform_int_distribution<int> cell(0, cells - 1);
   std::uniform_real_distribution<double> jitter(0.0, 0.3);
+  std::vector<double> box;
   for (int i = 0; i < n; ++i) {
+    box.clear();
     for (int v = 0; v < R.nv; ++v) {
       const double scale = periodic[v] ? 2 * M_PI / cells : 1.0;
       const double origin = periodic[v] ? -M_PI : 0.0;
       const int c = cell(rng);
-      R.lohi.push_back(origin + scale * (c - jitter(rng)));
-      R.lohi.push_back(origin + scale * (c + 1 + jitter(rng)));
+      box.push_back(origin + scale * (c - jitter(rng)));
+      box.push_back(origin + scale * (c + 1 + jitter(rng)));
     }
+    R.add_box(box.data());
     R.pos.push_back(0);
     R.neg.push_back(0);
     R.solution.push_back(1);
@@ -112,7 +115,7 @@ TEST(CheckerGraph, StripsFindExactlyThePairsOfTheRule) {
   for (const auto& periodic : kinds) {
     cc::OutBoxes R = random_boxes(rng, 1500, periodic, 60);
     for (int b = 0; b < 1500; b += 100) {  // wide boxes across many strips
-      double* x = &R.lohi[size_t(b) * 2 * R.nv + 2 * (R.nv - 1)];
+      double* x = R.box(size_t(b)) + 2 * (R.nv - 1);
       x[1] = x[0] + 20;
     }
     std::vector<std::pair<int, int>> got;
@@ -150,7 +153,7 @@ TEST(CheckerGraph, EndsBeyondTheFloatsRange) {
   cc::OutBoxes R = random_boxes(rng, 600, periodic, 60);
   for (int v = 0; v < 2; ++v)
     for (int b = v; b < 600; b += 50) {
-      double* x = &R.lohi[size_t(b) * 4 + 2 * v];
+      double* x = R.box(size_t(b)) + 2 * v;
       if (b % 100 < 50) x[1] = 1e39;
       else x[0] = -1e300;
     }

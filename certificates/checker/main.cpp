@@ -431,7 +431,7 @@ struct Checker {
     uint32_t pos = 0, neg = 0;
     for (int i = 0; i < p; ++i)
       if (s[i] != '0') (s[i] == '+' ? pos : neg) |= 1u << i;
-    R.lohi.insert(R.lohi.end(), box, box + 2 * nv);
+    R.add_box(box);
     R.pos.push_back(pos);
     R.neg.push_back(neg);
     R.solution.push_back(solution);
