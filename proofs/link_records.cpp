@@ -127,13 +127,14 @@ void LinkRecords::spill() {
 const double* LinkRecords::record(size_t i) const {
   if (i >= size_) throw std::out_of_range("link records: no record " + std::to_string(i));
   if (i >= spilled_) return &tail_[(i - spilled_) * stride()];
-  const size_t per_cache = std::max<size_t>(1, kSpillBytes / (stride() * sizeof(double)));
-  if (cache_.empty() || i < cache_first_ || i >= cache_first_ + per_cache ||
-      i - cache_first_ >= cache_.size() / stride()) {
-    cache_first_ = i;
-    const size_t count = std::min(per_cache, spilled_ - i);
+  // Windows of 1 MiB at multiples of their size: a sequential read (the certificate, the
+  // index) reads each once, and a backward one does not reread a window per record.
+  const size_t per_cache = std::max<size_t>(1, (size_t(1) << 20) / (stride() * sizeof(double)));
+  if (cache_.empty() || i < cache_first_ || i - cache_first_ >= cache_.size() / stride()) {
+    cache_first_ = i - i % per_cache;
+    const size_t count = std::min(per_cache, spilled_ - cache_first_);
     cache_.resize(count * stride());
-    read_all(fd_, cache_.data(), cache_.size(), i * stride() * sizeof(double));
+    read_all(fd_, cache_.data(), cache_.size(), cache_first_ * stride() * sizeof(double));
   }
   return &cache_[(i - cache_first_) * stride()];
 }

