@@ -37,7 +37,7 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
   f_ = std::fopen(tmp_.c_str(), "wb");
   if (!f_) throw std::runtime_error("cannot write " + tmp_);
   // Level 3 (zstd's default) with one helper thread: the compression runs beside the
-  // writing of the records, at about 3.4x on 3-RPR (bench/RESULTS.md).
+  // writing of the records: 3.1x smaller on RRRRR (bench/RESULTS.md).
   if (compress && !(f_ = open_compressed_output(f_, 3, 1)))
     throw std::runtime_error("cannot compress " + tmp_ + ": " + std::strerror(errno));
   static char buffer[1 << 20];

@@ -57,7 +57,7 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
       hhi[v] = std::max(hhi[v], hi);
       mean[v] += (hi - lo) / double(N);
     }
-  // The shifted ends of the boxes on a seam (on 3-RPR about 1 % of them): 4 bytes a box
+  // The shifted ends of the boxes on a seam (3-RPR at eps 1: 2 % of them): 4 bytes a box
   // instead of 32 per periodic variable.
   row_.assign(P_ ? N : 0, -1);
   Ival t;
