@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   auto* no_cert = solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
   solve->add_flag("--compress-cert", so.compress_cert,
                   "write the certificate compressed by zstd, as aspects.cert.zst (check_cert "
-                  "reads it as it reads the text; 3-4x smaller)")
+                  "reads it as it reads the text; about 3x smaller)")
       ->excludes(no_cert);
   solve->add_flag("--all-links", so.all_links,
                   "prove every link between neighbouring solution boxes (default: only those "

@@ -36,8 +36,8 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
     : path_(path), tmp_(path + ".tmp." + std::to_string(getpid())), compressed_(compress) {
   f_ = std::fopen(tmp_.c_str(), "wb");
   if (!f_) throw std::runtime_error("cannot write " + tmp_);
-  // Level 3 (zstd's default) with one helper thread: the compression runs beside the
-  // writing of the records: 3.1x smaller on RRRRR (bench/RESULTS.md).
+  // Level 3 (zstd's default) on one helper thread, beside the writing of the records:
+  // 3.1x smaller on RRRRR (bench/RESULTS.md).
   if (compress && !(f_ = open_compressed_output(f_, 3, 1)))
     throw std::runtime_error("cannot compress " + tmp_ + ": " + std::strerror(errno));
   static char buffer[1 << 20];
@@ -156,7 +156,7 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
   }
   std::free(buf);
   std::fclose(in);
-  // Spliced: its disk space is free for the rest (3-RPR at eps 0.1: about 42 GB of records).
+  // Spliced: its disk space is free for the rest (3-RPR at eps 0.1: 48 GB of records).
   std::remove(stream.path().c_str());
 }
 
