@@ -244,3 +244,40 @@ TEST(CheckerGraph, PairLimitStopsTheSweep) {
   EXPECT_THROW(sweep.run([](int, int) {}, all - 1), std::length_error);
   EXPECT_THROW(cc::lower_bound(R, sweep, 0, all - 1), std::length_error);
 }
+
+// The strips swept on several threads: the same pairs, each as often, as on one thread;
+// the same bound; the pair limit and a visitor's exception still end the sweep.
+TEST(CheckerGraph, ThreadsSweepTheSamePairs) {
+  const cc::Ival two_pi = make_two_pi();
+  std::mt19937 rng(13);
+  const std::vector<bool> periodic = {true, false};
+  cc::OutBoxes R = random_boxes(rng, 2000, periodic, 60);
+  for (size_t b = 0; b < R.size(); ++b) {  // two sign classes
+    R.pos[b] = b % 3 ? 1 : 0;
+    R.neg[b] = b % 3 ? 0 : 1;
+  }
+  const cc::NeighbourSweep sweep(R, periodic, two_pi);
+  std::vector<std::pair<int, int>> one;
+  const size_t all = sweep.run([&](int a, int b) { one.emplace_back(a, b); });
+  std::sort(one.begin(), one.end());
+  ASSERT_GT(all, 2000u);
+  const long bound = cc::lower_bound(R, sweep, 1, SIZE_MAX, nullptr, 1);
+  ASSERT_GT(bound, 1);
+  for (int threads : {2, 3, 8}) {
+    std::vector<std::pair<int, int>> got;
+    EXPECT_EQ(sweep.run([&](int a, int b) { got.emplace_back(a, b); }, SIZE_MAX, threads), all);
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, one) << threads << " threads";
+    EXPECT_EQ(cc::lower_bound(R, sweep, 1, SIZE_MAX, nullptr, threads), bound);
+    EXPECT_EQ(sweep.run([](int, int) {}, all, threads), all);
+    EXPECT_THROW(sweep.run([](int, int) {}, all - 1, threads), std::length_error);
+    EXPECT_THROW(cc::lower_bound(R, sweep, 1, all - 1, nullptr, threads), std::length_error);
+    size_t seen = 0;
+    EXPECT_THROW(sweep.run(
+                     [&](int, int) {
+                       if (++seen == all / 2) throw std::runtime_error("visitor");
+                     },
+                     SIZE_MAX, threads),
+                 std::runtime_error);
+  }
+}

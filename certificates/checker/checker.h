@@ -439,7 +439,10 @@ class NeighbourSweep {
   NeighbourSweep(const OutBoxes& R, const std::vector<bool>& periodic, const Ival& two_pi);
   // Visits every pair of M and returns how many it visited. Throws std::length_error beyond
   // `max_pairs` pairs: boxes that all overlap (one IMAGE for many cells) make M quadratic.
-  size_t run(const std::function<void(int, int)>& visit, size_t max_pairs = SIZE_MAX) const;
+  // With threads > 1 the strips are swept in parallel and `visit` is called under a lock, in
+  // an order that depends on the threads; the pairs and their count do not.
+  size_t run(const std::function<void(int, int)>& visit, size_t max_pairs = SIZE_MAX,
+             int threads = 1) const;
   // Boxes whose shifted ends are held: those whose copy shifted by ±2π meets the hull.
   size_t seam_boxes() const { return P_ ? shifted_.size() / (2 * P_) : 0; }
 
@@ -464,6 +467,8 @@ class NeighbourSweep {
   }
   size_t P_ = 0;  // periodic variables
   int strip(double e) const;
+  // The pairs of strip t, each handed to `put` (returns false to stop: the pair limit).
+  bool sweep_strip(int t, const std::function<bool(int, int)>& put) const;
   double e_lo_ = 0, e_width_ = 1;  // strips of the second sweep variable e: [lo + t·w, ...)
   int strips_ = 1;
   std::vector<size_t> strip_start_;  // items_ of strip t: [strip_start_[t], strip_start_[t+1])
@@ -476,7 +481,7 @@ class NeighbourSweep {
 // Throws std::length_error beyond `max_pairs` pairs, and when classes × (pairs + boxes)
 // exceeds 2^32. `pairs`, if given, receives the number of pairs of M.
 long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_t max_pairs,
-                 size_t* pairs = nullptr);
+                 size_t* pairs = nullptr, int threads = 1);
 // Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
 long filtered_count(const std::vector<int64_t>& sizes);
 

@@ -8,7 +8,10 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <exception>
 #include <numeric>
+#include <thread>
+#include <utility>
 
 namespace cc {
 
@@ -150,41 +153,82 @@ int NeighbourSweep::strip(double x) const {
   return t < 0 ? 0 : t >= strips_ - 1 ? strips_ - 1 : int(t);
 }
 
-size_t NeighbourSweep::run(const std::function<void(int, int)>& visit, size_t max_pairs) const {
+bool NeighbourSweep::sweep_strip(int t, const std::function<bool(int, int)>& put) const {
   const int nv = R_.nv;
-  size_t pairs = 0;
-  for (int t = 0; t < strips_; ++t) {
-    const size_t end = strip_start_[t + 1];
-    for (size_t i = strip_start_[t]; i < end; ++i)
-      for (size_t j = i + 1; j < end && items_[j].lo <= items_[i].hi; ++j) {
-        const Item &p = items_[i], &q = items_[j];
-        if (p.id == q.id || (p.k && q.k) || q.elo > p.ehi || p.elo > q.ehi) continue;
-        if (strip(double(std::max(p.elo, q.elo))) != t) continue;  // met in another strip too
-        // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
-        // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
-        const int a = std::min(p.id, q.id);
-        const int b = std::max(p.id, q.id);
-        bool meet = true;
-        for (int v = 0; v < nv && meet; ++v) {
-          const double* x = R_.box(a) + 2 * v;
-          const double* y = R_.box(b) + 2 * v;
-          meet = x[0] <= y[1] && y[0] <= x[1];
-          for (int k = -1; k <= 1 && !meet && slot_[v] >= 0; k += 2) {
-            const std::array<double, 2>* s = shifted(b, v, k);
-            meet = s && x[0] <= (*s)[1] && (*s)[0] <= x[1];
-          }
+  const size_t end = strip_start_[t + 1];
+  for (size_t i = strip_start_[t]; i < end; ++i)
+    for (size_t j = i + 1; j < end && items_[j].lo <= items_[i].hi; ++j) {
+      const Item &p = items_[i], &q = items_[j];
+      if (p.id == q.id || (p.k && q.k) || q.elo > p.ehi || p.elo > q.ehi) continue;
+      if (strip(double(std::max(p.elo, q.elo))) != t) continue;  // met in another strip too
+      // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
+      // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
+      const int a = std::min(p.id, q.id);
+      const int b = std::max(p.id, q.id);
+      bool meet = true;
+      for (int v = 0; v < nv && meet; ++v) {
+        const double* x = R_.box(a) + 2 * v;
+        const double* y = R_.box(b) + 2 * v;
+        meet = x[0] <= y[1] && y[0] <= x[1];
+        for (int k = -1; k <= 1 && !meet && slot_[v] >= 0; k += 2) {
+          const std::array<double, 2>* s = shifted(b, v, k);
+          meet = s && x[0] <= (*s)[1] && (*s)[0] <= x[1];
         }
-        if (!meet) continue;
-        if (pairs >= max_pairs) throw std::length_error("neighbourhood graph");
-        ++pairs;
-        visit(a, b);
       }
-  }
+      if (meet && !put(a, b)) return false;
+    }
+  return true;
+}
+
+// Each thread sweeps the next strip not taken and hands its pairs to `visit` in batches,
+// under a lock: the scan is nearly all the time (3-RPR at eps 0.1: 97 % of the samples,
+// the union-finds 3 %), and the union-finds' result does not depend on the order.
+size_t NeighbourSweep::run(const std::function<void(int, int)>& visit, size_t max_pairs,
+                           int threads) const {
+  constexpr size_t kBatch = size_t(1) << 14;
+  std::atomic<int> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex lock;
+  size_t pairs = 0;
+  bool over = false;
+  std::exception_ptr error;
+  const auto work = [&] {
+    std::vector<std::pair<int, int>> batch;
+    const auto flush = [&] {
+      std::lock_guard<std::mutex> hold(lock);
+      try {
+        over = over || pairs + batch.size() > max_pairs;
+        for (size_t i = 0; i < batch.size() && !over && !error; ++i)
+          visit(batch[i].first, batch[i].second);
+      } catch (...) {
+        if (!error) error = std::current_exception();
+      }
+      pairs += batch.size();
+      batch.clear();
+      if (over || error) stop = true;
+      return !stop;
+    };
+    batch.reserve(kBatch);
+    for (int t; !stop && (t = next++) < strips_;) {
+      const bool more = sweep_strip(t, [&](int a, int b) {
+        batch.emplace_back(a, b);
+        return batch.size() < kBatch || flush();
+      });
+      if (!more) return;
+    }
+    flush();
+  };
+  std::vector<std::thread> helpers;
+  for (int k = 1; k < std::min(threads, strips_); ++k) helpers.emplace_back(work);
+  work();
+  for (auto& h : helpers) h.join();
+  if (error) std::rethrow_exception(error);
+  if (over) throw std::length_error("neighbourhood graph");
   return pairs;
 }
 
 long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_t max_pairs,
-                 size_t* pairs) {
+                 size_t* pairs, int threads) {
   const size_t N = R.size();
   const uint32_t full = use;
   // Only the sign vectors s of solution boxes with every used sign verified can count (bit
@@ -221,7 +265,7 @@ long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_
           for (uint32_t both = compat[a] & compat[b]; both; both &= both - 1)
             uf[__builtin_ctz(both)].unite(a, b);
         },
-        max_pairs);
+        max_pairs, threads);
     if (double(classes.size()) * double(seen + N) > double(uint64_t(1) << 32))
       throw std::length_error("sign classes");
     for (size_t c = 0; c < g; ++c) {
