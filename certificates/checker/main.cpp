@@ -680,7 +680,8 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     } catch (const std::length_error& e) {
       if (std::string(e.what()) == "neighbourhood graph")
         rejected(claim_rec, "the neighbourhood graph has more than 2^22 + 64 pairs per box");
-      rejected(claim_rec, "too many sign classes for the neighbourhood graph (2^32 steps)");
+      rejected(claim_rec,
+               "too many sign classes for the neighbourhood graph (2^32 + 2^10 steps per box)");
     }
     graph_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.claimed = claim;
