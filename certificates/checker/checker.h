@@ -479,7 +479,7 @@ class NeighbourSweep {
 // Only the factors whose bit is set in `use` separate (the others are ignored). Sweeps M
 // once per group of classes, a union-find per class of a group (at most 2^28 entries).
 // Throws std::length_error beyond `max_pairs` pairs, and when classes × (pairs + boxes)
-// exceeds 2^32. `pairs`, if given, receives the number of pairs of M.
+// exceeds 2^32 + 2^10 per box. `pairs`, if given, receives the number of pairs of M.
 long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_t max_pairs,
                  size_t* pairs = nullptr, int threads = 1);
 // Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
