@@ -6,8 +6,8 @@
 
 #include "aspects_version.h"
 #include "checkpoint.h"
-#include "model.h"
-#include "model_info.h"
+#include "model/model.h"
+#include "model/model_info.h"
 #include "path_command.h"
 #include "query_command.h"
 #include "result_index.h"

@@ -10,7 +10,7 @@
 #include <iterator>
 #include <memory>
 
-#include "atomic_file.h"
+#include "io/atomic_file.h"
 #include "certificate_writer.h"
 #include "le_reader.h"
 #include "le_writer.h"

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "box_store.h"
+#include "search/box_store.h"
 #include "link.h"
 #include "path_plot.h"
 #include "pose.h"

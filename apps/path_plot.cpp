@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "atomic_file.h"
+#include "io/atomic_file.h"
 
 extern char** environ;
 

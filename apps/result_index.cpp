@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "atomic_file.h"
+#include "io/atomic_file.h"
 #include "generalized_aspects.h"
 #include "link.h"
-#include "model.h"
+#include "model/model.h"
 #include "le_reader.h"
 #include "le_writer.h"
 

@@ -20,16 +20,16 @@
 #include <sstream>
 
 #include "aspects_version.h"
-#include "atomic_file.h"
+#include "io/atomic_file.h"
 #include "certificate_writer.h"
 #include "generalized_aspects.h"
-#include "model.h"
+#include "model/model.h"
 #include "result_index.h"
 #include "checkpoint.h"
 #include "solve_resume.h"
 #include "solve_progress.h"
 #include "search_state.h"
-#include "stop_condition.h"
+#include "search/stop_condition.h"
 
 namespace aspects {
 

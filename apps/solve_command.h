@@ -20,7 +20,7 @@ struct SolveOptions {
   bool compress_cert = false;  // aspects.cert.zst instead of aspects.cert
   bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
   bool quiet = false;
-  bool mpfi_only = false;  // no double fast path at 53 bits (core/interval.h)
+  bool mpfi_only = false;  // no double fast path at 53 bits (core/numerics/interval.h)
   std::string bisect = "round-robin";
   // Limits of a long run (issue 12); negative: none. A stopped run writes a partial
   // result and exits with kExitStopped.

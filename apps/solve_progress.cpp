@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "stop_condition.h"
+#include "search/stop_condition.h"
 
 namespace aspects {
 

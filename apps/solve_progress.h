@@ -6,9 +6,9 @@
 #include <chrono>
 #include <string>
 
-#include "branch_and_prune.h"
+#include "search/branch_and_prune.h"
 #include "generalized_aspects.h"
-#include "model.h"
+#include "model/model.h"
 
 namespace aspects {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "checkpoint.h"
-#include "model.h"
+#include "model/model.h"
 #include "solve_command.h"
 
 namespace aspects {

@@ -6,8 +6,8 @@
 // makes (x, q*) a point of its graph (q* ∈ IMAGE ⊆ Q~, f periodic in q for box B).
 #pragma once
 
-#include "box_store.h"
-#include "cuspidality.h"
+#include "search/box_store.h"
+#include "aspects/cuspidality.h"
 #include "hansen_sengupta.h"
 
 namespace aspects {

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "interval.h"
-#include "model.h"
+#include "numerics/interval.h"
+#include "model/model.h"
 
 namespace aspects {
 

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "interval.h"
+#include "numerics/interval.h"
 
 namespace aspects::margins {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "hansen_sengupta.h"
-#include "model_eval.h"
+#include "model/model_eval.h"
 
 namespace aspects {
 

@@ -17,12 +17,12 @@
 
 #include "assembly_witness.h"
 #include "checker_margins.h"
-#include "constraints.h"
+#include "model/constraints.h"
 #include "contractor.h"
-#include "determinant_factors.h"
-#include "model_eval.h"
+#include "model/determinant_factors.h"
+#include "model/model_eval.h"
 #include "search_state.h"
-#include "stop_condition.h"
+#include "search/stop_condition.h"
 
 namespace aspects {
 

@@ -16,19 +16,19 @@
 #include <utility>
 #include <vector>
 
-#include "bisector.h"
-#include "box_store.h"
-#include "branch_and_prune.h"
+#include "search/bisector.h"
+#include "search/box_store.h"
+#include "search/branch_and_prune.h"
 #include "certificate_sink.h"
-#include "components.h"
-#include "cuspidality.h"
+#include "aspects/components.h"
+#include "aspects/cuspidality.h"
 #include "hansen_sengupta.h"
 #include "link.h"
-#include "model.h"
-#include "neighborhood_graph.h"
-#include "separation.h"
+#include "model/model.h"
+#include "aspects/neighborhood_graph.h"
+#include "aspects/separation.h"
 #include "solution_box.h"
-#include "verdict.h"
+#include "search/verdict.h"
 
 namespace aspects {
 
@@ -46,7 +46,7 @@ struct AspectsConfig {
   BisectorKind bisector = BisectorKind::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
-  // Limits and signals (core/stop_condition.h): when it says stop, the cells not yet
+  // Limits and signals (core/search/stop_condition.h): when it says stop, the cells not yet
   // searched are kept as unexplored output boxes and the rest of the method runs as usual.
   StopCondition* stop = nullptr;
   // Resuming (proofs/search_state.h): the parts already searched are taken from here,

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "interval_ops.h"
+#include "numerics/interval_ops.h"
 #include "preconditioner.h"
 
 namespace aspects {

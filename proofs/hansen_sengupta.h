@@ -10,8 +10,8 @@
 
 #include <vector>
 
-#include "interval.h"
-#include "model_eval.h"
+#include "numerics/interval.h"
+#include "model/model_eval.h"
 
 namespace aspects {
 
@@ -30,7 +30,7 @@ struct HsArrays {
 };
 
 // At a working precision of 53 bits the sweep runs on doubles (the same ends as MPFI,
-// core/interval_ops.h); otherwise on MPFI.
+// core/numerics/interval_ops.h); otherwise on MPFI.
 struct HsWorkspace {
   HsArrays<Interval> mpfi;
   HsArrays<DInterval> doubles;
@@ -43,7 +43,7 @@ struct HsWorkspace {
 // command j is written to image[j]. With `intersect`, each component is intersected
 // with the box (the contracting operator used by Prune). C is left in ws.C.
 // With `in_pose` the roles swap: the pose is unknown, the commands are the parameters and
-// Fx replaces Fq (the existence proof in x of cuspidality witnesses, core/cuspidality.h).
+// Fx replaces Fq (the existence proof in x of cuspidality witnesses, core/aspects/cuspidality.h).
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
                          std::vector<Interval>& image, HsWorkspace& ws, bool in_pose = false);
 

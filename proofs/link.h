@@ -8,9 +8,9 @@
 
 #include <vector>
 
-#include "box_store.h"
+#include "search/box_store.h"
 #include "hansen_sengupta.h"
-#include "neighborhood_graph.h"
+#include "aspects/neighborhood_graph.h"
 
 namespace aspects {
 

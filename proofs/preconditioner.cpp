@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "interval_ops.h"
+#include "numerics/interval_ops.h"
 
 namespace aspects {
 

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "interval.h"
+#include "numerics/interval.h"
 
 namespace aspects {
 

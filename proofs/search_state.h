@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "branch_and_prune.h"
+#include "search/branch_and_prune.h"
 #include "generalized_aspects.h"
 
 namespace aspects {

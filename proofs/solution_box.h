@@ -17,10 +17,10 @@
 
 #include <vector>
 
-#include "constraints.h"
+#include "model/constraints.h"
 #include "hansen_sengupta.h"
-#include "model_eval.h"
-#include "verdict.h"
+#include "model/model_eval.h"
+#include "search/verdict.h"
 
 namespace aspects {
 

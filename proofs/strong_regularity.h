@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "interval.h"
+#include "numerics/interval.h"
 #include "preconditioner.h"  // approximate_inverse: C
 
 namespace aspects {

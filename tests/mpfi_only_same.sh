@@ -1,5 +1,5 @@
 #!/bin/sh
-# At 53 bits the double fast path gives MPFI's ends (core/double_interval.h): a solve with
+# At 53 bits the double fast path gives MPFI's ends (core/numerics/double_interval.h): a solve with
 # it and one with `--mpfi-only` must write the same certificate, boxes and index, byte for
 # byte, on a robot with periodic variables (sin/cos, their projections) and one without.
 # Usage: mpfi_only_same.sh ASPECTS ROBOTS_DIR

@@ -1,10 +1,10 @@
-// The backward kernels of HC4-Revise (core/backward.*), one random containment test each
+// The backward kernels of HC4-Revise (core/model/backward.*), one random containment test each
 // (MPFI's type_ii tests turned around): for random boxes [a], [b], a random target [r]
 // around the value at a random point, and random points (α, β) of the box, every point
 // whose exact value op(α, β) (MPFR at 256 bits, rounded both ways) lies in [r] is still
 // in the projected box, and the kernel reports "empty" only when no sampled point does.
 //
-// Seen failing (each break made in core/backward.cpp, then reverted):
+// Seen failing (each break made in core/model/backward.cpp, then reverted):
 //  - bwd_mul projecting b with r / b instead of r / a: Mul fails;
 //  - meet_symmetric keeping only a ∩ p (the negative preimage dropped): Sqr, Pow and Abs
 //    fail;
@@ -17,8 +17,8 @@
 #include <random>
 #include <string>
 
-#include "backward.h"
-#include "expr.h"
+#include "model/backward.h"
+#include "model/expr.h"
 #include "test_util.h"
 
 using namespace aspects;

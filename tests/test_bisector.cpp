@@ -1,4 +1,4 @@
-// Bisectors (core/bisector.*): every policy keeps the paper's meaning of eps — a box is
+// Bisectors (core/search/bisector.*): every policy keeps the paper's meaning of eps — a box is
 // bisected while (and only while) its widest variable is wider than eps — and splits at a
 // double strictly inside the chosen variable. Then each policy's own choice.
 // Break it to see it fail: make Bisector::choose test `>= eps_` (a box exactly eps wide is
@@ -7,8 +7,8 @@
 
 #include <random>
 
-#include "bisector.h"
-#include "model.h"
+#include "search/bisector.h"
+#include "model/model.h"
 
 using namespace aspects;
 
@@ -105,3 +105,15 @@ TEST(Bisector, NamesParse) {
 }
 
 }  // namespace
+
+// The model language lists the names a `bisect` statement may give; the search must
+// give every one of them a bisector, and accept no other name.
+TEST(Bisector, EveryNameOfTheLanguageHasABisector) {
+  for (const char* name : kBisectNames) {
+    BisectorKind kind;
+    EXPECT_TRUE(parse_bisector_kind(name, kind)) << name;
+  }
+  BisectorKind kind;
+  EXPECT_FALSE(parse_bisector_kind("widest", kind));
+  EXPECT_EQ(std::size(kBisectNames), std::size(kAll));
+}

@@ -1,11 +1,11 @@
-// The search loop alone (core/branch_and_prune.*, and its parallel assembly in
+// The search loop alone (core/search/branch_and_prune.*, and its parallel assembly in
 // compute_aspects): the cells of the leaves, rebuilt from the recorded splits, partition
 // the root box exactly (their volumes, exact rationals, add up to the root's, and no two
 // share an interior point), for every number of threads and every depth at which
 // subtrees are deferred; the two halves of a bisected box are exactly that box cut at the
 // recorded point (no gap, no overlap), and every box the steps see lies in its cell.
 //
-// Seen failing (each break made in core/branch_and_prune.cpp, then reverted):
+// Seen failing (each break made in core/search/branch_and_prune.cpp, then reverted):
 //  - the right half starts at nextafter(p, +inf) instead of p (a gap the tree does not
 //    show): HalvesAreTheBisectedBoxCutAtTheSplit fails;
 //  - the tree records split = p + (hi - p) / 2 while the box is cut at p: all four fail
@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
-#include "branch_and_prune.h"
+#include "search/branch_and_prune.h"
 #include "generalized_aspects.h"
-#include "model.h"
+#include "model/model.h"
 
 using namespace aspects;
 

@@ -2,8 +2,8 @@
 // filtering rule with its tie rule, and the separation bound (11).
 #include <gtest/gtest.h>
 
-#include "components.h"
-#include "separation.h"
+#include "aspects/components.h"
+#include "aspects/separation.h"
 
 using namespace aspects;
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "constraints.h"
+#include "model/constraints.h"
 #include "generalized_aspects.h"
 
 using namespace aspects;

@@ -10,9 +10,9 @@
 #include <string>
 #include <utility>
 
-#include "cuspidality.h"
+#include "aspects/cuspidality.h"
 #include "generalized_aspects.h"
-#include "model.h"
+#include "model/model.h"
 
 using namespace aspects;
 
@@ -197,7 +197,7 @@ TEST(CommandWitnesses, DoublePoseOnTheTorus) {
 }
 
 // With two non-periodic pose coordinates the sweep lists its candidates strip by strip
-// (core/cuspidality.cpp): on random boxes the witnesses found are exactly the pairs of one
+// (core/aspects/cuspidality.cpp): on random boxes the witnesses found are exactly the pairs of one
 // CSNC that meet on every pose coordinate and are apart on a command, each once.
 TEST(PoseWitnesses, StripsFindEveryPairOnRandomBoxes) {
   set_working_precision(53);

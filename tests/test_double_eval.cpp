@@ -1,4 +1,4 @@
-// The double-endpoint fast path (core/double_interval.h, core/double_eval.h) against MPFI
+// The double-endpoint fast path (core/numerics/double_interval.h, core/model/double_eval.h) against MPFI
 // at 53 bits: the same ends bit for bit, operation by operation and node by node on
 // random boxes of every robot, and a hand-back (nullopt) for what it does not take.
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@
 #include <random>
 #include <sstream>
 
-#include "double_eval.h"
-#include "eval.h"
-#include "model.h"
+#include "model/double_eval.h"
+#include "model/eval.h"
+#include "model/model.h"
 
 namespace {
 

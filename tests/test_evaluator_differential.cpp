@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "../certificates/checker/checker.h"
-#include "model_eval.h"
+#include "model/model_eval.h"
 
 namespace {
 

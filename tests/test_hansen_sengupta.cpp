@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "hansen_sengupta.h"
-#include "model.h"
-#include "model_eval.h"
+#include "model/model.h"
+#include "model/model_eval.h"
 #include "robot_refs.h"
 #include "test_util.h"
 
@@ -280,7 +280,7 @@ TEST_F(HansenSengupta, DoublesGiveMpfisSweepOnTheRobots) {
     Model m = parse_model(text.str(), ref.path());
     ModelEvaluator ev(m);
     HsWorkspace wd, wm;
-    // wm's calls run with the double fast path off (core/interval.h), restored after each.
+    // wm's calls run with the double fast path off (core/numerics/interval.h), restored after each.
     auto mpfi_only = [](auto call) {
       set_double_fast_path(false);
       auto result = call();

@@ -1,4 +1,4 @@
-// Enclosure property of the forward interval evaluation (core/eval.cpp): for random
+// Enclosure property of the forward interval evaluation (core/model/eval.cpp): for random
 // boxes and random points of those boxes, the MPFI value of every operation contains
 // the exact value at the point. The reference is MPFR at (at least) 4x the working
 // precision, rounded both down and up: both roundings must lie inside the interval.
@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "eval.h"
-#include "expr.h"
-#include "interval.h"
-#include "model.h"
+#include "model/eval.h"
+#include "model/expr.h"
+#include "numerics/interval.h"
+#include "model/model.h"
 #include "test_util.h"
 
 using namespace aspects;

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "eval.h"
-#include "expr.h"
-#include "model.h"
-#include "model_eval.h"
-#include "model_info.h"
+#include "model/eval.h"
+#include "model/expr.h"
+#include "model/model.h"
+#include "model/model_eval.h"
+#include "model/model_info.h"
 #include "robot_refs.h"
 #include "test_util.h"
 

@@ -18,8 +18,8 @@
 #include <random>
 
 #include "link.h"
-#include "model.h"
-#include "model_eval.h"
+#include "model/model.h"
+#include "model/model_eval.h"
 #include "test_util.h"
 
 using namespace aspects;

@@ -1,4 +1,4 @@
-// The model language (core/model_parser.cpp): the five robots of robots/ parse into
+// The model language (core/model/model_parser.cpp): the five robots of robots/ parse into
 // the expected models, and every error is a ModelError "FILE:LINE:COL: error: MESSAGE"
 // pointing at the right line and column.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "model.h"
+#include "model/model.h"
 #include "test_util.h"
 
 using namespace aspects;

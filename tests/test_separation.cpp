@@ -1,11 +1,11 @@
-// Separation alone (core/separation.*, with the neighbourhood graph it is given,
-// core/neighborhood_graph.*): the lower bound (11) on box sets built by hand, where two
+// Separation alone (core/aspects/separation.*, with the neighbourhood graph it is given,
+// core/aspects/neighborhood_graph.*): the lower bound (11) on box sets built by hand, where two
 // certified components of one sign class touch only through undecided boxes (across the
 // ±π seam too): they are one component, counted once. Random box sets are checked against
 // a brute-force count written from the paper's definition, with exact (MPFR 256-bit)
 // contact tests modulo 2π.
 //
-// Seen failing (each break made in core/separation.cpp, then reverted):
+// Seen failing (each break made in core/aspects/separation.cpp, then reverted):
 //  - `compatible` requiring the exact sign (an undecided box with a factor that may vanish
 //    joins no class): both TouchingOnlyThrough... tests and RandomBoxSetsMatchBruteForce
 //    fail (one aspect counted twice);
@@ -18,8 +18,8 @@
 #include <random>
 #include <vector>
 
-#include "neighborhood_graph.h"
-#include "separation.h"
+#include "aspects/neighborhood_graph.h"
+#include "aspects/separation.h"
 #include "test_util.h"
 
 using namespace aspects;

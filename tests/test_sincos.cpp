@@ -1,4 +1,4 @@
-// SinCos (core/sincos.*): the joint enclosure of sin and cos over an interval.
+// SinCos (core/numerics/sincos.*): the joint enclosure of sin and cos over an interval.
 // Ground truth: the range of sin and cos over [lo, hi] computed independently with MPFR
 // at 256 bits — the endpoint values and, for every multiple of π/2 inside, the extreme
 // value ±1 reached there. The enclosure must contain that range; in the one-quadrant
@@ -18,8 +18,8 @@
 #include <cmath>
 #include <random>
 
-#include "interval.h"
-#include "sincos.h"
+#include "numerics/interval.h"
+#include "numerics/sincos.h"
 
 using namespace aspects;
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "expr.h"
-#include "interval.h"
+#include "model/expr.h"
+#include "numerics/interval.h"
 
 namespace aspects_test {
 

@@ -2,8 +2,8 @@
 // Usage: count_aspects MODEL [CSNCS LOWER_BOUND]   (default 4 4: PRRP's four aspects)
 // Exit 0 when both counts are as expected, 1 when not, 2 on a usage or model error.
 #include <aspects/generalized_aspects.h>
-#include <aspects/interval.h>
-#include <aspects/model.h>
+#include <aspects/numerics/interval.h>
+#include <aspects/model/model.h>
 
 #include <cstdio>
 #include <cstdlib>

@@ -6,10 +6,10 @@
 #include <sstream>
 #include <string>
 
-#include "determinant_factors.h"
-#include "model.h"
-#include "model_eval.h"
-#include "model_info.h"
+#include "model/determinant_factors.h"
+#include "model/model.h"
+#include "model/model_eval.h"
+#include "model/model_info.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static bool init = (aspects::set_working_precision(53), true);

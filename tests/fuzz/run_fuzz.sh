@@ -16,7 +16,7 @@ libs="-lmpfi -lmpfr -lgmp -lflint-arb -lflint"
 # Model parser, linked with the whole of core/ (a list of files fell out of date twice as
 # the parser and the evaluator gained files).
 clang++ $flags -I"$root/core" -isystem /usr/include/eigen3 -isystem /usr/include/flint \
-  "$here/fuzz_model_parser.cpp" "$root"/core/*.cpp $libs -o "$work/fuzz_model_parser"
+  "$here/fuzz_model_parser.cpp" "$root"/core/*/*.cpp $libs -o "$work/fuzz_model_parser"
 mkdir -p "$work/corpus_model"
 cp "$root"/robots/*.robot "$root"/tests/models/*.robot "$work/corpus_model/"
 "$work/fuzz_model_parser" -max_total_time="$secs" -timeout=10 -max_len=4096 \
