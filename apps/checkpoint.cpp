@@ -99,14 +99,14 @@ void write_part(Out& o, const SearchPart& part, uint32_t p) {
     o.u8(uint8_t(s.fate));
     o.i32(s.reason);
   }
-  const AspectsResult& r = part.out;
-  const uint32_t boxes = uint32_t(r.boxes.size());
+  const OutputBoxes& r = part.boxes;
+  const uint32_t boxes = uint32_t(r.size());
   o.u32(boxes);
-  for (double x : r.boxes.coords()) o.f64(x);
-  for (uint32_t b = 0; b < boxes; ++b) o.u8(r.certified[b]);
-  for (uint32_t b = 0; b < boxes; ++b) o.u8(uint8_t(r.undecided_kind[b]));
-  for (size_t i = 0; i < size_t(boxes) * p; ++i) o.u8(uint8_t(r.signs[i]));
-  const SearchDiagnostics& d = r.diagnostics;
+  for (double x : r.ends().coords()) o.f64(x);
+  for (uint32_t b = 0; b < boxes; ++b) o.u8(r.certified(b));
+  for (uint32_t b = 0; b < boxes; ++b) o.u8(uint8_t(r.kind(b)));
+  for (size_t i = 0; i < size_t(boxes) * p; ++i) o.u8(uint8_t(r.sign_column()[i]));
+  const SearchDiagnostics& d = part.diagnostics;
   for (int k = 0; k < kVerdicts; ++k) o.u64(uint64_t(d.attempts[k]));
   for (int k = 0; k < kVerdicts; ++k) o.u64(uint64_t(d.undecided[k]));
   for (long x : {d.refuted_by_equation, d.refuted_by_newton, d.refuted_by_constraint})
@@ -137,23 +137,22 @@ void read_part(In& in, SearchPart& part, const CheckpointHeader& h, uint32_t def
       s.index = leaf;
     }
   }
-  AspectsResult& r = part.out;
   const uint32_t boxes = in.count(16 * uint64_t(h.nv) + 2 + h.p);
   std::vector<double> coords(size_t(boxes) * 2 * h.nv);
   for (double& x : coords) x = in.f64();
-  r.boxes = BoxStore(int(h.nv));
-  r.boxes.append_coords(coords.data(), boxes);
-  r.certified.resize(boxes);
-  for (auto& c : r.certified) c = in.u8();
-  r.undecided_kind.resize(boxes);
-  for (auto& k : r.undecided_kind) {
+  std::vector<uint8_t> certified(boxes);
+  for (auto& c : certified) c = in.u8();
+  std::vector<UndecidedKind> kinds(boxes);
+  for (auto& k : kinds) {
     uint8_t v = in.u8();
     if (v > uint8_t(UndecidedKind::Unexplored)) in.fail("bad undecided kind");
     k = UndecidedKind(v);
   }
-  r.signs.resize(size_t(boxes) * h.p);
-  for (auto& s : r.signs) s = int8_t(in.u8());
-  SearchDiagnostics& d = r.diagnostics;
+  std::vector<int8_t> signs(size_t(boxes) * h.p);
+  for (auto& s : signs) s = int8_t(in.u8());
+  part.boxes = OutputBoxes::from_columns(int(h.nv), int(h.p), coords, std::move(certified),
+                                         std::move(kinds), std::move(signs));
+  SearchDiagnostics& d = part.diagnostics;
   for (int k = 0; k < kVerdicts; ++k) d.attempts[k] = long(in.u64());
   for (int k = 0; k < kVerdicts; ++k) d.undecided[k] = long(in.u64());
   for (long* x : {&d.refuted_by_equation, &d.refuted_by_newton, &d.refuted_by_constraint})

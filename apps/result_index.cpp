@@ -128,13 +128,13 @@ class RecordSink {
 void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) {
   const size_t p = r.factors.size();
   uint32_t solutions = 0;
-  for (int b = 0; b < r.boxes.size(); ++b) solutions += r.certified[b] != 0;
+  for (int b = 0; b < r.boxes.size(); ++b) solutions += r.boxes.certified(b);
   // Each box's place among the solution boxes, for the links.
   std::vector<int32_t> solution_index(r.boxes.size(), -1);
   IndexSolutionBox s;
   sink.begin_solutions(solutions);
   for (int b = 0, k = 0; b < r.boxes.size(); ++b) {
-    if (!r.certified[b]) continue;
+    if (!r.boxes.certified(b)) continue;
     s.id = uint32_t(b);
     s.csnc = r.csnc[b];
     s.lo.clear();
@@ -143,16 +143,16 @@ void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) 
       s.lo.push_back(r.boxes.lo(b, v));
       s.hi.push_back(r.boxes.hi(b, v));
     }
-    s.signs.assign(r.signs.begin() + ptrdiff_t(b * p), r.signs.begin() + ptrdiff_t((b + 1) * p));
+    s.signs.assign(r.boxes.signs(b), r.boxes.signs(b) + p);
     solution_index[b] = k++;
     sink.solution(s);
   }
   IndexUndecidedBox u;
   sink.begin_undecided(uint32_t(r.boxes.size()) - solutions);
   for (int b = 0; b < r.boxes.size(); ++b) {
-    if (r.certified[b]) continue;
+    if (r.boxes.certified(b)) continue;
     u.id = uint32_t(b);
-    u.kind = uint8_t(r.undecided_kind[b]);
+    u.kind = uint8_t(r.boxes.kind(b));
     u.lo.clear();
     u.hi.clear();
     for (int v : model.pose) {
@@ -172,7 +172,7 @@ void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) 
     if (kept)
       l.witness.assign(r.link_proofs.witness(i), r.link_proofs.witness(i) + model.n());
     else
-      l.witness = recompute_witness(model, r.boxes, pair);
+      l.witness = recompute_witness(model, r.boxes.ends(), pair);
     sink.link(l);
   }
 }

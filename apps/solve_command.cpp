@@ -81,9 +81,9 @@ void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& 
   buf += ",boundary\n";
   for (int b = 0; b < r.boxes.size(); ++b) {
     int c = r.csnc[b];
-    const bool unexplored = r.undecided_kind[b] == UndecidedKind::Unexplored;
+    const bool unexplored = r.boxes.kind(b) == UndecidedKind::Unexplored;
     buf += std::to_string(b);
-    buf += r.certified[b] ? ",solution," : unexplored ? ",unexplored," : ",undecided,";
+    buf += r.boxes.certified(b) ? ",solution," : unexplored ? ",unexplored," : ",undecided,";
     buf += std::to_string(c);
     buf += c >= 0 && c < r.filtered ? ",1" : ",0";
     for (int v = 0; v < r.boxes.nv(); ++v) {
@@ -95,8 +95,8 @@ void write_boxes_csv(const Model& m, const AspectsResult& r, const std::string& 
     // Why a box stayed undecided: `constraint` (on the boundary of an additional
     // constraint, the paper's blue boxes) or `singular` (P1 or P2 failed, red and
     // black); empty for solution and unexplored boxes.
-    const char* why = r.certified[b] || unexplored ? ""
-                      : r.undecided_kind[b] == UndecidedKind::Constraint ? "constraint"
+    const char* why = r.boxes.certified(b) || unexplored ? ""
+                      : r.boxes.kind(b) == UndecidedKind::Constraint ? "constraint"
                                                                          : "singular";
     buf += ',';
     buf += why;
@@ -177,9 +177,9 @@ nlohmann::json summary_json(const Model& m, const SolveOptions& o, const Aspects
   j["links"] = {{"neighbor", r.neighbor_count}, {"certified", r.certified_links.size()}};
   long singular = 0, boundary = 0;
   for (int b = 0; b < r.boxes.size(); ++b) {
-    if (r.certified[b] || r.undecided_kind[b] == UndecidedKind::Unexplored) continue;
-    singular += r.undecided_kind[b] == UndecidedKind::Singular;
-    boundary += r.undecided_kind[b] == UndecidedKind::Constraint;
+    if (r.boxes.certified(b) || r.boxes.kind(b) == UndecidedKind::Unexplored) continue;
+    singular += r.boxes.kind(b) == UndecidedKind::Singular;
+    boundary += r.boxes.kind(b) == UndecidedKind::Constraint;
   }
   j["boxes"]["undecided_not_p1"] = r.undecided - singular - boundary;
   j["boxes"]["undecided_not_p2"] = singular;
@@ -308,7 +308,7 @@ int run_solve(const SolveOptions& opts) {
     header.nv = uint32_t(model.vars.size());
     cfg.checkpoint_seconds = o.checkpoint;
     cfg.checkpoint = [&](const SearchState& st, const std::vector<uint8_t>& done) {
-      header.p = uint32_t(st.top.out.factors.size());
+      header.p = uint32_t(st.top.boxes.factors());
       try {
         write_checkpoint(checkpoint_path, header, st, done, cert.get());
         checkpoint_failed = false;

@@ -69,7 +69,7 @@ double decided_share(const Model& m, const AspectsResult& r) {
   Box root = m.initial_box();
   double left = 0;
   for (int b = 0; b < r.boxes.size(); ++b) {
-    if (r.undecided_kind[b] != UndecidedKind::Unexplored) continue;
+    if (r.boxes.kind(b) != UndecidedKind::Unexplored) continue;
     double f = 1;
     for (int v = 0; v < r.boxes.nv(); ++v) {
       double w = root[v].hi_up() - root[v].lo_down();

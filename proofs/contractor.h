@@ -8,19 +8,14 @@
 
 #include "hansen_sengupta.h"
 #include "model/model_eval.h"
+#include "search/contractor.h"
 
 namespace aspects {
 
-struct Refutation {
-  enum Kind : uint8_t { None, Equation, HansenSengupta } kind = None;
-  int equation = -1;  // Kind::Equation: HC4 on this equation emptied the box
-  explicit operator bool() const { return kind != None; }
-};
-
-class EquationContractor {
+class EquationContractor : public Contractor {
  public:
   explicit EquationContractor(ModelEvaluator& ev) : ev_(ev) {}
-  Refutation contract(Box& box);
+  Refutation contract(Box& box) override;
 
  private:
   ModelEvaluator& ev_;

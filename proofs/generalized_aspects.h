@@ -1,6 +1,8 @@
-// The whole method of paper Section 4: branch and prune with Prove = P1 ∧ P2 (4.2),
-// neighbourhood graph and certified links P3 (4.3), CSNCs and filtering (4.4.1),
-// separation and the lower bound (4.4.2).
+// The whole method of paper Section 4, as a sequence of phases (proofs/pipeline/, a file
+// each): the search, branch and prune with Prove = P1 ∧ P2 (4.2); the neighbourhood graph
+// (4.3.1) streamed into the certified links P3 (4.3.2) and the separation's first pass;
+// CSNCs and filtering (4.4.1); separation and the lower bound (4.4.2); cuspidality and
+// assembly witnesses (3.2). Each phase asks the stop condition.
 //
 // Guarantees of the result:
 //  - every solution box S: ∀x ∈ [x] ∃! q ∈ [q] f(x,q) = 0 (P1), Fx, Fq nonsingular
@@ -11,76 +13,26 @@
 //    bound relies on it.
 #pragma once
 
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "search/bisector.h"
-#include "search/box_store.h"
-#include "search/branch_and_prune.h"
-#include "certificate_sink.h"
-#include "aspects/components.h"
 #include "aspects/cuspidality.h"
-#include "hansen_sengupta.h"
-#include "link.h"
-#include "model/model.h"
 #include "aspects/neighborhood_graph.h"
 #include "aspects/separation.h"
-#include "solution_box.h"
-#include "search/verdict.h"
+#include "link.h"
+#include "model/determinant_factors.h"
+#include "model/model.h"
+#include "pipeline/aspects_config.h"
+#include "pipeline/aspects_search.h"
+#include "search/output_boxes.h"
+#include "search/stop_condition.h"
 
 namespace aspects {
 
-struct SearchState;
-
-struct AspectsConfig {
-  double eps = 0.1;
-  double tau = 1.01;
-  int max_newton_iterations = 8;
-  bool keep_link_proofs = true;       // P3 data, for the certificate
-  // Prove every link between neighbouring solution boxes, or only those that join two
-  // components not yet joined (a spanning forest: the same CSNCs, far fewer proofs).
-  bool all_links = false;
-  int threads = 1;
-  BisectorKind bisector = BisectorKind::RoundRobin;
-  int defer_depth = 8;  // subtrees below this depth are searched in parallel
-  CertificateSink* certificate = nullptr;  // receives the tree records while solving
-  // Limits and signals (core/search/stop_condition.h): when it says stop, the cells not yet
-  // searched are kept as unexplored output boxes and the rest of the method runs as usual.
-  StopCondition* stop = nullptr;
-  // Resuming (proofs/search_state.h): the parts already searched are taken from here,
-  // the others searched; the state is consumed (empty on return).
-  SearchState* resume = nullptr;
-  // Called every `checkpoint_seconds` while subtrees are searched, and once more when the
-  // search stopped early, with the state and which subtrees are done (a snapshot: parts
-  // not done may be changing). From a worker thread, never two calls at once.
-  std::function<void(const SearchState&, const std::vector<uint8_t>& done)> checkpoint;
-  double checkpoint_seconds = 0;
-  std::function<void(const SearchStats&)> progress;
-};
-
-enum class UndecidedKind : uint8_t {
-  NoExistence = 0,  // P1 not proved (red in the paper's figures)
-  Singular = 1,     // P1 proved, P2 not (black)
-  Constraint = 2,   // on the boundary of an additional constraint (blue, paper 5.4)
-  Unexplored = 3,   // the search stopped before this cell: not a verdict at all
-};
-
-// Why the search decided what it did: for tuning and for the user, not for any claim.
-struct SearchDiagnostics {
-  VerdictCounts attempts{};   // Prove's verdict on every box that survived Prune
-  VerdictCounts undecided{};  // the verdict on each undecided leaf
-  long refuted_by_equation = 0, refuted_by_newton = 0, refuted_by_constraint = 0;
-  void add(const SearchDiagnostics& o);
-};
-
 struct AspectsResult {
   std::vector<Factor> factors;
-  BoxStore boxes;                       // R = S ∪ U, output order
-  std::vector<uint8_t> certified;       // 1: solution box
-  std::vector<UndecidedKind> undecided_kind;
-  std::vector<int8_t> signs;            // factors.size() per box
+  OutputBoxes boxes;                    // R = S ∪ U, output order, with their signs
   std::vector<SearchNode> tree;
   // N's pairs, in the order proved (M itself is never held: neighbor_count counts it).
   std::vector<NeighborPair> neighbors;
@@ -94,9 +46,10 @@ struct AspectsResult {
   SeparationResult separation;
   SearchDiagnostics diagnostics;
   long solutions = 0, undecided = 0, discarded = 0, processed = 0;
-  // A stopped search: `unexplored` output boxes are cells never searched (certified 0,
-  // undecided_kind Unexplored); every claim above still holds, the bound counting them
-  // like undecided boxes.
+  // A stopped search: `unexplored` output boxes are cells never searched (undecided, kind
+  // Unexplored); every claim above still holds, the bound counting them like undecided
+  // boxes. A run stopped after the search keeps what each phase established (see
+  // proofs/pipeline/): fewer links, a smaller bound, fewer witnesses; every claim holds.
   long unexplored = 0;
   StopReason stopped_by = StopReason::None;
   bool complete() const { return stopped_by == StopReason::None; }

@@ -1,4 +1,4 @@
-// The state of the parallel search between its parts (issue 12): the top of the tree, the
+// The state of the parallel search between its parts: the top of the tree, the
 // subtrees it deferred, and the result of each subtree searched to the end. A part is
 // searched from its box alone (the steps keep no state between boxes), so a run resumed
 // from this state, searching only the unfinished subtrees again, ends with the same tree,
@@ -8,15 +8,16 @@
 #include <cstdint>
 #include <vector>
 
+#include "pipeline/aspects_search.h"
 #include "search/branch_and_prune.h"
-#include "generalized_aspects.h"
+#include "search/output_boxes.h"
 
 namespace aspects {
 
 // Output boxes and tree of one part of the search (the top of the tree, or a subtree).
-// Only boxes, certified, undecided_kind, signs and diagnostics of `out` are used.
 struct SearchPart {
-  AspectsResult out;
+  OutputBoxes boxes;
+  SearchDiagnostics diagnostics;
   std::vector<SearchNode> tree;
   int32_t next_leaf = 0;  // merge cursor: leaves are taken in their local order
 };

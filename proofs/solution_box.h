@@ -31,12 +31,19 @@ struct SolutionProof {
   std::vector<double> dx, dq;  // their column weights (1 unless the unscaled test failed)
 };
 
-class SolutionBoxProver {
+// Prove's part of Algorithm 1, as the search receives it.
+class BoxProver {
+ public:
+  virtual ~BoxProver() = default;
+  // On Verdict::Solution, `reported` is B and `proof` its certificate data.
+  virtual Verdict prove(const Box& cell, Box& reported, SolutionProof& proof) = 0;
+};
+
+class SolutionBoxProver : public BoxProver {
  public:
   SolutionBoxProver(ModelEvaluator& ev, ConstraintChecker& constraints, double tau,
                     int max_iterations);
-  // On Verdict::Solution, `reported` is B and `proof` its certificate data.
-  Verdict prove(const Box& cell, Box& reported, SolutionProof& proof);
+  Verdict prove(const Box& cell, Box& reported, SolutionProof& proof) override;
 
  private:
   bool covers_cell(const ExistenceProof& ex, const Box& cell) const;

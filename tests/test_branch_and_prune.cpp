@@ -123,7 +123,7 @@ class AnnulusSteps : public BranchAndPruneSteps {
   std::vector<Seen> pruned;  // in the order of the prune calls
   std::vector<Box> leaves;   // output boxes, by output index
 
-  bool prune(Box& box, int32_t& reason) override {
+  PruneResult prune(Box& box) override {
     Seen s{box, box, true};
     double r_lo = 0, r_hi = 0;
     for (const auto& x : box) {
@@ -140,16 +140,16 @@ class AnnulusSteps : public BranchAndPruneSteps {
       }
     s.out = box;
     pruned.push_back(s);
-    reason = 0;
-    return s.kept;
+    PruneResult r;
+    if (!s.kept) r.refuted_by = 0;
+    return r;
   }
-  Verdict prove(const Box& box, int32_t& index) override {
-    if (box_width(box) > 0.3 || hash(box) % 3 != 0) return Verdict::NoExistence;
-    index = int32_t(leaves.size());
+  ProveResult prove(const Box& box) override {
+    if (box_width(box) > 0.3 || hash(box) % 3 != 0) return {Verdict::NoExistence};
     leaves.push_back(box);
-    return Verdict::Solution;
+    return {Verdict::Solution, int32_t(leaves.size() - 1)};
   }
-  int32_t keep_undecided(const Box& box, Verdict) override {
+  int32_t keep_undecided(const Box& box, Verdict, const PruneResult&) override {
     leaves.push_back(box);
     return int32_t(leaves.size() - 1);
   }

@@ -136,10 +136,10 @@ struct Query {
 
 }  // namespace
 
-void stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
+bool stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
                            const std::vector<bool>& periodic,
                            const std::function<void(const std::vector<NeighborPair>&)>& consume,
-                           const ForEachIndex& for_each) {
+                           const ForEachIndex& for_each, const std::function<bool()>& stop) {
   const int nv = R.nv();
   std::vector<int> pvars;
   for (int v = 0; v < nv; ++v)
@@ -208,6 +208,7 @@ void stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& 
               out.end());
   };
   for (int first = 0; first < blocks; first += round) {
+    if (stop && stop()) return false;
     const int n = std::min(round, blocks - first);
     for_each(n, [&](int32_t i) { query_block(first + i, found[i]); });
     for (int i = 0; i < n; ++i) {
@@ -215,6 +216,7 @@ void stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& 
       found[i].clear();
     }
   }
+  return true;
 }
 
 std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,

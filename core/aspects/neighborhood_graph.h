@@ -30,11 +30,13 @@ uint32_t pack_shift(const std::vector<int>& k);
 // M sorted by (a, b), each pair once, a piece at a time so that it need not be held whole
 // (479 M pairs, 5.8 GB, on 3-RPR at eps 0.3): the boxes are queried in blocks, a round of
 // blocks at once through `for_each`, then `consume` receives each block's pairs in order on
-// the calling thread. The pieces do not depend on `for_each`.
-void stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
+// the calling thread. The pieces do not depend on `for_each`. `stop` is asked before each
+// round; once it says stop, the stream ends there and returns false (M was not all given).
+bool stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,
                            const std::vector<bool>& periodic,
                            const std::function<void(const std::vector<NeighborPair>&)>& consume,
-                           const ForEachIndex& for_each = serial_for_each);
+                           const ForEachIndex& for_each = serial_for_each,
+                           const std::function<bool()>& stop = {});
 
 // All of M, concatenated.
 std::vector<NeighborPair> neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& R,

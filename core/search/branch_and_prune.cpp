@@ -54,20 +54,20 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     if (on_progress && (stats.processed & 1023) == 0) on_progress();
     // The cell's share, before Prune narrows it: the refuted slabs are decided too.
     const double cell_share = stats.domain_width.empty() ? 0 : stats.share(it.box);
-    int32_t reason = -1;
-    if (!steps.prune(it.box, reason)) {
+    const PruneResult pruned = steps.prune(it.box);
+    if (pruned.refuted()) {
       stats.add_decided(cell_share);
       node.fate = LeafFate::Discarded;
-      if (reason > kMaxPruneReason) throw std::length_error("prune reason out of range");
-      node.reason = int16_t(reason);
+      if (pruned.refuted_by > kMaxPruneReason) throw std::length_error("prune reason out of range");
+      node.reason = int16_t(pruned.refuted_by);
       ++stats.discarded;
       continue;
     }
-    int32_t index = -1;
-    Verdict verdict = steps.prove(it.box, index);
+    const ProveResult proved = steps.prove(it.box);
+    const Verdict verdict = proved.verdict;
     if (verdict == Verdict::Solution) {
       node.fate = LeafFate::Solution;
-      node.index = index;
+      node.index = proved.index;
       ++stats.solutions;
       stats.add_decided(cell_share);
       continue;
@@ -75,7 +75,7 @@ bool branch_and_prune(const Box& root, BranchAndPruneSteps& steps, std::vector<S
     SplitChoice split = steps.choose_split(it.box, {it.parent_split, verdict});
     if (split.var < 0) {
       node.fate = LeafFate::Undecided;
-      node.index = steps.keep_undecided(it.box, verdict);
+      node.index = steps.keep_undecided(it.box, verdict, pruned);
       ++stats.undecided;
       stats.add_decided(cell_share);
       continue;

@@ -10,6 +10,7 @@
 #include <functional>
 #include <vector>
 
+#include "model/constraints.h"
 #include "search/bisector.h"
 #include "numerics/interval.h"
 #include "search/stop_condition.h"
@@ -47,17 +48,33 @@ static_assert(sizeof(SearchNode) == 16, "a tree node stays 16 bytes");
 // reason (over 32,000 constraints) stops the search with an error.
 constexpr int32_t kMaxPruneReason = 32767;
 
+// What Prune decided about a box: refuted (it holds no solution; the reason is recorded in
+// the tree), or kept, contracted, with the truth of the additional constraints on it.
+struct PruneResult {
+  int32_t refuted_by = -1;          // >= 0: refuted, and why
+  Truth constraints = Truth::True;  // kept: the constraints on the contracted box
+  bool refuted() const { return refuted_by >= 0; }
+};
+
+// What Prove decided about a box; on Verdict::Solution the step has stored it (and its
+// proof) as output box `index`.
+struct ProveResult {
+  Verdict verdict;
+  int32_t index = -1;
+};
+
+// The steps of Algorithm 1 for one problem. They keep no result from one call to the
+// next: what a later step needs of an earlier one is handed to it.
 class BranchAndPruneSteps {
  public:
   virtual ~BranchAndPruneSteps() = default;
-  // Prune_c: contracts the box (removing no solution). Returns false when the box
-  // holds no solution; `reason` then says why (recorded in the tree).
-  virtual bool prune(Box& box, int32_t& reason) = 0;
-  // Prove_c: the verdict on the box. On Verdict::Solution the step has stored it (and
-  // its proof) under `output_index`.
-  virtual Verdict prove(const Box& box, int32_t& output_index) = 0;
-  // Stores an undecided box (a leaf that Prove rejected for `why`); its output index.
-  virtual int32_t keep_undecided(const Box& box, Verdict why) = 0;
+  // Prune_c: contracts the box, removing no solution.
+  virtual PruneResult prune(Box& box) = 0;
+  // Prove_c: the verdict on the box, as Prune returned it.
+  virtual ProveResult prove(const Box& box) = 0;
+  // Stores an undecided box (a leaf that Prove rejected for `why`, with what Prune said of
+  // it); its output index.
+  virtual int32_t keep_undecided(const Box& box, Verdict why, const PruneResult& pruned) = 0;
   // Stores a cell the search stopped before (neither pruned nor proved); its output index.
   virtual int32_t keep_unexplored(const Box& box) = 0;
   // Branch: the variable and the point to bisect at, or var = -1 for a leaf.

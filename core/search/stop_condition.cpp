@@ -65,6 +65,14 @@ bool StopCondition::admit(long output_boxes) {
   return !stopped();
 }
 
+bool StopCondition::poll() {
+  if (stopped()) return true;
+  if (signals_ && g_signalled) request(StopReason::Signal);
+  else if (timed_ && std::chrono::steady_clock::now() >= deadline_) request(StopReason::TimeLimit);
+  else if (memory_limit_ > 0 && over_memory(0)) request(StopReason::MemoryLimit);
+  return stopped();
+}
+
 void watch_stop_signals() {
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;

@@ -1,4 +1,4 @@
-// When a long search stops early (issue 12): a time limit, a number of processed boxes, a
+// When a long run stops early: a time limit, a number of processed boxes, a
 // memory limit, or SIGINT/SIGTERM. The search asks before each box; once a reason is set
 // it stays set, and every thread leaves the rest of its work unexplored (the cells are
 // kept, so coverage and the lower bound stay sound).
@@ -30,6 +30,10 @@ class StopCondition {
   // Before processing one more box: false when the search must stop. Counts the box
   // against the max-boxes budget otherwise (exactly, across threads).
   bool admit(long output_boxes);
+  // Between units of work of the phases after the search: true when the run must stop
+  // (a signal, the time limit, the resident memory above the limit). The max-boxes budget
+  // counts the search's boxes only.
+  bool poll();
   void request(StopReason r);  // the first reason wins
   StopReason reason() const { return StopReason(reason_.load(std::memory_order_relaxed)); }
   bool stopped() const { return reason() != StopReason::None; }

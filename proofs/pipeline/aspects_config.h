@@ -1,0 +1,47 @@
+// What a run of the method of paper Section 4 is asked to do (proofs/generalized_aspects.h),
+// read by every phase.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "certificate_sink.h"
+#include "search/bisector.h"
+#include "search/branch_and_prune.h"
+#include "search/stop_condition.h"
+
+namespace aspects {
+
+struct SearchState;
+
+struct AspectsConfig {
+  double eps = 0.1;
+  double tau = 1.01;
+  int max_newton_iterations = 8;
+  bool keep_link_proofs = true;       // P3 data, for the certificate
+  // Prove every link between neighbouring solution boxes, or only those that join two
+  // components not yet joined (a spanning forest: the same CSNCs, far fewer proofs).
+  bool all_links = false;
+  int threads = 1;
+  BisectorKind bisector = BisectorKind::RoundRobin;
+  int defer_depth = 8;  // subtrees below this depth are searched in parallel
+  CertificateSink* certificate = nullptr;  // receives the tree records while solving
+  // Limits and signals (search/stop_condition.h), asked by every phase. A stopped search
+  // keeps the cells not yet searched as unexplored output boxes; a later phase that stops
+  // keeps what it established (each phase says what), so every claim of the result holds.
+  StopCondition* stop = nullptr;
+  // Resuming (proofs/search_state.h): the parts already searched are taken from here,
+  // the others searched; the state is consumed (empty on return).
+  SearchState* resume = nullptr;
+  // Called every `checkpoint_seconds` while subtrees are searched, and once more when the
+  // search stopped early, with the state and which subtrees are done (a snapshot: parts
+  // not done may be changing). From a worker thread, never two calls at once.
+  std::function<void(const SearchState&, const std::vector<uint8_t>& done)> checkpoint;
+  double checkpoint_seconds = 0;
+  std::function<void(const SearchStats&)> progress;
+
+  bool stopped() const { return stop && stop->poll(); }
+};
+
+}  // namespace aspects

@@ -1,0 +1,168 @@
+#include "search_phase.h"
+
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+#include "checker_gap.h"
+#include "contractor.h"
+#include "model/constraints.h"
+#include "model/model_eval.h"
+#include "part_merger.h"
+#include "search_state.h"
+#include "solution_box.h"
+
+namespace aspects {
+
+namespace {
+
+// The parts of the NCSP (4)'s search for one thread: one evaluator shared by Prune, Prove
+// and the factor signs.
+struct NcspParts {
+  ModelEvaluator ev;
+  ConstraintChecker constraints;
+  EquationContractor equations;
+  CheckerGapContractor contractor;
+  SolutionBoxProver prover;
+  std::unique_ptr<Bisector> bisector;
+  FactorSigns signs;
+
+  NcspParts(const Model& m, const AspectsConfig& c, const std::vector<Factor>& factors)
+      : ev(m), constraints(m, ev), equations(ev), contractor(equations),
+        prover(ev, constraints, c.tau, c.max_newton_iterations),
+        bisector(make_bisector(c.bisector, m, c.eps)), signs(ev, m, factors) {}
+  SearchParts parts() { return {contractor, prover, *bisector, constraints, signs}; }
+};
+
+// Runs Algorithm 1 on one part of the tree.
+bool search_part(const Model& m, const AspectsConfig& c, const std::vector<Factor>& factors,
+                 const Box& root, int parent_split, SearchPart& part, TreeSink* sink,
+                 SearchStats& stats, const std::function<void()>& tick, int defer_depth,
+                 std::vector<DeferredSubtree>* deferred) {
+  part.boxes = OutputBoxes(int(m.vars.size()), int(factors.size()));
+  part.diagnostics = SearchDiagnostics();
+  NcspParts parts(m, c, factors);
+  AspectsSearch steps(m.n(), parts.parts(), part.boxes, part.diagnostics, sink);
+  bool complete = branch_and_prune(root, steps, part.tree, stats, tick, parent_split,
+                                   defer_depth, deferred, c.stop);
+  if (sink) sink->finished();
+  return complete;
+}
+
+// Checkpoints while the subtrees are searched: `done` changes under `state_lock`; the
+// callback gets a copy, and reads only finished parts, which no thread changes any more.
+class Checkpointer {
+ public:
+  Checkpointer(const AspectsConfig& c, SearchState& st) : c_(c), st_(st) {}
+  void mark_done(size_t k) {
+    std::lock_guard<std::mutex> g(state_lock_);
+    st_.done[k] = 1;
+  }
+  // Unless forced, only when `checkpoint_seconds` have passed and no other thread writes.
+  void write(bool forced) {
+    if (!c_.checkpoint) return;
+    std::unique_lock<std::mutex> one(write_lock_, std::defer_lock);
+    if (forced) one.lock();
+    else if (!one.try_lock()) return;
+    std::vector<uint8_t> done;
+    {
+      std::lock_guard<std::mutex> g(state_lock_);
+      auto now = std::chrono::steady_clock::now();
+      if (!forced &&
+          std::chrono::duration<double>(now - last_).count() < c_.checkpoint_seconds)
+        return;
+      done = st_.done;
+    }
+    c_.checkpoint(st_, done);
+    std::lock_guard<std::mutex> g(state_lock_);
+    last_ = std::chrono::steady_clock::now();
+  }
+
+ private:
+  const AspectsConfig& c_;
+  SearchState& st_;
+  std::mutex state_lock_, write_lock_;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// A resumed state must have been made with this model's factors.
+void check_resumed(const SearchState& st, size_t factors) {
+  auto fits = [&](const SearchPart& part) { return size_t(part.boxes.factors()) == factors; };
+  bool fit = fits(st.top);
+  for (size_t k = 0; k < st.deferred.size(); ++k) fit = fit && (!st.done[k] || fits(st.parts[k]));
+  if (!fit) throw std::runtime_error("resumed search state does not match the model's factors");
+}
+
+// Progress only: the share of the domain a resumed checkpoint had decided.
+double resumed_share(const SearchState& st, const SearchStats& stats) {
+  double decided = 1;
+  for (size_t k = 0; k < st.deferred.size(); ++k)
+    if (!st.done[k]) decided -= stats.share(st.deferred[k].box);
+  return decided;
+}
+
+}  // namespace
+
+SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
+                           const std::vector<Factor>& factors, Parallel& parallel,
+                           PhaseClock& clock) {
+  const long prec = working_precision();
+  SearchStats stats;
+  std::mutex progress_lock;
+  std::function<void()> tick;
+  if (config.progress)
+    tick = [&]() {
+      if (!progress_lock.try_lock()) return;
+      config.progress(stats);
+      progress_lock.unlock();
+    };
+  Box root = model.initial_box();
+  for (auto& x : root) round_out_to_doubles(x);
+  for (const auto& x : root) stats.domain_width.push_back(x.hi_up() - x.lo_down());
+  CertificateSink* cert = config.certificate;
+  if (cert) cert->begin(root, factors);
+
+  SearchState fresh;
+  SearchState& st = config.resume ? *config.resume : fresh;
+  if (!st.top_done) {
+    st = SearchState();
+    st.top_done = search_part(model, config, factors, root, -1, st.top,
+                              cert ? cert->top() : nullptr, stats, tick, config.defer_depth,
+                              &st.deferred);
+    st.parts.resize(st.deferred.size());
+    st.done.assign(st.deferred.size(), 0);
+  }
+  check_resumed(st, factors.size());
+  if (config.resume && st.top_done) stats.resumed_share = resumed_share(st, stats);
+  std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);
+  for (size_t k = 0; k < st.deferred.size(); ++k)
+    if (!st.done[k] && cert) sinks[k] = cert->subtree(int32_t(k));
+
+  Checkpointer checkpoints(config, st);
+  parallel.arena().execute([&] {
+    tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
+      if (st.done[k]) return;
+      set_working_precision(prec);  // MPFR's default precision is per thread
+      if (search_part(model, config, factors, st.deferred[k].box, st.deferred[k].parent_split,
+                      st.parts[k], sinks[k], stats, tick, -1, nullptr))
+        checkpoints.mark_done(k);
+      if (config.checkpoint_seconds > 0) checkpoints.write(false);
+    }, tbb::simple_partitioner());
+  });
+  bool all_done = st.top_done;
+  for (uint8_t d : st.done) all_done = all_done && d;
+  if (!all_done) checkpoints.write(true);  // stopped: what a resumed run needs
+  clock.lap("search");
+
+  SearchOutcome out;
+  out.boxes = OutputBoxes(int(model.vars.size()), int(factors.size()));
+  PartMerger(st.parts, out.boxes, out.tree).merge(st.top);
+  out.diagnostics.add(st.top.diagnostics);
+  for (const auto& part : st.parts) out.diagnostics.add(part.diagnostics);
+  st = SearchState();  // merged: a resumed state is consumed
+  clock.lap("merge");
+  return out;
+}
+
+}  // namespace aspects

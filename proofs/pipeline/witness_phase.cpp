@@ -1,0 +1,38 @@
+#include "witness_phase.h"
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include "assembly_witness.h"
+#include "hansen_sengupta.h"
+#include "model/model_eval.h"
+
+namespace aspects {
+
+CuspidalWitnesses witness_phase(const Model& model, const AspectsConfig& config,
+                                const OutputBoxes& boxes, const std::vector<int32_t>& csnc,
+                                int csncs, Parallel& parallel, PhaseClock& clock) {
+  CuspidalWitnesses w;
+  if (config.stopped()) return w;
+  std::vector<bool> periodic;
+  for (const auto& v : model.vars) periodic.push_back(v.periodic);
+  const WitnessSpace space(model.pose, model.command, periodic);
+  w = find_pose_witnesses(boxes.ends(), csnc, csncs, space, 10000, parallel.for_each());
+  clock.lap("cuspidality");
+  if (config.stopped()) return w;
+  struct AssemblyProver {
+    ModelEvaluator ev;
+    HsWorkspace ws;
+    explicit AssemblyProver(const Model& m) : ev(m) {}
+  };
+  tbb::enumerable_thread_specific<AssemblyProver> provers([&] { return AssemblyProver(model); });
+  auto prove = [&](CommandWitness& cw) {
+    AssemblyProver& p = provers.local();
+    return prove_command_witness(p.ev, boxes.ends(), config.tau, cw, p.ws);
+  };
+  find_command_witnesses(boxes.ends(), csnc, csncs, space, prove, w, 1000, 100000, 2,
+                         parallel.for_each());
+  clock.lap("assembly witnesses");
+  return w;
+}
+
+}  // namespace aspects
