@@ -9,16 +9,15 @@ set_target_properties(aspects_engine PROPERTIES EXPORT_NAME engine)
 set_target_properties(aspects_cert_writer PROPERTIES EXPORT_NAME cert_writer)
 
 install(TARGETS aspects check_cert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# Users include <aspects/NAME.h> (proofs/ and the writer) or <aspects/LAYER/NAME.h>
-# (core/'s layers), as the headers include each other: P/include/aspects is on the path too.
+# Users include <aspects/NAME.h> (proofs/ and the writer) or <aspects/FOLDER/NAME.h>
+# (core/'s layers, proofs/pipeline), as the headers include each other: P/include/aspects is on the path too.
 install(TARGETS mpfi_deps arb_deps aspects_core aspects_engine aspects_cert_writer
         EXPORT aspectsTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${CMAKE_INSTALL_INCLUDEDIR}/aspects)
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aspects
-        FILES_MATCHING PATTERN "*.h")
-file(GLOB _aspects_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/proofs/*.h)
-install(FILES ${_aspects_headers} ${PROJECT_SOURCE_DIR}/certificates/certificate_writer.h
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/ ${PROJECT_SOURCE_DIR}/proofs/
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aspects FILES_MATCHING PATTERN "*.h")
+install(FILES ${PROJECT_SOURCE_DIR}/certificates/certificate_writer.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aspects)
 
 set(_aspects_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/aspects)

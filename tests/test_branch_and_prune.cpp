@@ -393,7 +393,7 @@ TEST(BranchAndPrune, StoppedEngineRunIsASoundPartialResult) {
     return k;
   };
   for (int b = 0; b < full.boxes.size(); ++b)
-    if (full.certified[b]) full_solutions.insert(key(full, b));
+    if (full.boxes.certified(b)) full_solutions.insert(key(full, b));
   ASSERT_GT(full.processed, 20);
   for (long n : {3L, full.processed / 7, full.processed / 2, full.processed - 1})
     for (int threads : {1, 2}) {
@@ -413,7 +413,7 @@ TEST(BranchAndPrune, StoppedEngineRunIsASoundPartialResult) {
       EXPECT_EQ(leaves, r.boxes.size());
       EXPECT_TRUE(partitions(leaf_cells(r.tree, root2), root2)) << n;
       for (int b = 0; b < r.boxes.size(); ++b)
-        if (r.certified[b]) {
+        if (r.boxes.certified(b)) {
           EXPECT_TRUE(full_solutions.count(key(r, b))) << n << " box " << b;
         }
       EXPECT_LE(r.separation.lower_bound, full.separation.lower_bound) << n;

@@ -197,8 +197,8 @@ TEST_P(InnerTest, SolutionBoxesSatisfyTheConstraintEverywhere) {
   std::uniform_real_distribution<double> U(0, 1);
   long sampled = 0, boundary = 0;
   for (int b = 0; b < r.boxes.size(); ++b) {
-    if (!r.certified[b]) {
-      boundary += r.undecided_kind[b] == UndecidedKind::Constraint;
+    if (!r.boxes.certified(b)) {
+      boundary += r.boxes.kind(b) == UndecidedKind::Constraint;
       continue;
     }
     for (int s = 0; s < 8; ++s) {

@@ -170,7 +170,7 @@ TEST(CommandWitnesses, ComplexSquaringHasTwoPosesPerCommand) {
   EXPECT_EQ(r.cuspidal.command_count, (std::vector<int64_t>{116}));
   std::vector<bool> has(r.boxes.size(), false);
   for (const CommandWitness& w : r.cuspidal.command) has[w.a] = has[w.b] = true;
-  for (int b = 0; b < r.boxes.size(); ++b) EXPECT_EQ(has[b], bool(r.certified[b])) << b;
+  for (int b = 0; b < r.boxes.size(); ++b) EXPECT_EQ(has[b], bool(r.boxes.certified(b))) << b;
   EXPECT_EQ(r.cuspidal.command_search[0], WitnessSearch::Complete);
   EXPECT_TRUE(r.cuspidal.pose.empty());
   for (const CommandWitness& w : r.cuspidal.command) {

@@ -22,14 +22,14 @@ AspectsResult solve(const std::string& file, double eps) {
 void expect_consistent(const AspectsResult& r) {
   // Bookkeeping that must hold whatever the robot.
   EXPECT_EQ(r.boxes.size(), r.solutions + r.undecided);
-  long certified = std::accumulate(r.certified.begin(), r.certified.end(), 0L);
+  long certified = std::accumulate(r.boxes.certified_column().begin(), r.boxes.certified_column().end(), 0L);
   EXPECT_EQ(certified, r.solutions);
   int64_t in_csncs = std::accumulate(r.csnc_sizes.begin(), r.csnc_sizes.end(), int64_t(0));
   EXPECT_EQ(in_csncs, r.solutions);
   for (size_t i = 1; i < r.csnc_sizes.size(); ++i) EXPECT_GE(r.csnc_sizes[i - 1], r.csnc_sizes[i]);
   for (int32_t e : r.certified_links) {
-    EXPECT_TRUE(r.certified[r.neighbors[e].a]);
-    EXPECT_TRUE(r.certified[r.neighbors[e].b]);
+    EXPECT_TRUE(r.boxes.certified(r.neighbors[e].a));
+    EXPECT_TRUE(r.boxes.certified(r.neighbors[e].b));
     EXPECT_EQ(r.csnc[r.neighbors[e].a], r.csnc[r.neighbors[e].b]);
   }
   EXPECT_LE(r.separation.lower_bound, int(r.csnc_sizes.size()));
@@ -110,8 +110,9 @@ TEST(GeneralizedAspects, ParallelSubtreesGiveTheSequentialResult) {
         ASSERT_EQ(a.boxes.lo(i, v), b.boxes.lo(i, v)) << "box " << i;
         ASSERT_EQ(a.boxes.hi(i, v), b.boxes.hi(i, v)) << "box " << i;
       }
-    EXPECT_EQ(a.certified, b.certified);
-    EXPECT_EQ(a.signs, b.signs);
+    EXPECT_EQ(a.boxes.certified_column(), b.boxes.certified_column());
+    EXPECT_EQ(a.boxes.kind_column(), b.boxes.kind_column());
+    EXPECT_EQ(a.boxes.sign_column(), b.boxes.sign_column());
     EXPECT_EQ(a.tree.size(), b.tree.size());
     EXPECT_EQ(a.certified_links, b.certified_links);
     EXPECT_EQ(a.csnc_sizes, b.csnc_sizes);

@@ -114,7 +114,7 @@ TEST_P(IndependentSoundness, ClaimsHoldAtSampledPoints) {
 
   std::vector<int> sol;
   for (int b = 0; b < r.boxes.size(); ++b)
-    if (r.certified[b]) sol.push_back(b);
+    if (r.boxes.certified(b)) sol.push_back(b);
   size_t stride = std::max<size_t>(1, sol.size() / c.max_boxes);
   std::map<int, std::pair<int, int>> csnc_signs;  // csnc -> (sign det Fx, sign det Fq)
   int checked = 0;

@@ -55,7 +55,7 @@ void expect_format_graph(const std::string& file, double eps) {
   AspectsResult r = compute_aspects(m, cfg);
   std::vector<bool> periodic;
   for (const auto& v : m.vars) periodic.push_back(v.periodic);
-  const BoxStore& R = r.boxes;
+  const BoxStore& R = r.boxes.ends();
   const int nv = R.nv();
   auto E = shifted_ends(R, periodic);
   std::set<std::pair<int, int>> want;
@@ -110,8 +110,8 @@ TEST(NeighborhoodGraph, SameListForAnyBlockOrder) {
     for (int i = n - 2; i >= 0; i -= 2) body(i);
     other.join();
   };
-  std::vector<NeighborPair> p = neighbor_pairs(r.tree, r.boxes, periodic, backwards_on_two_threads);
-  std::vector<NeighborPair> serial = neighbor_pairs(r.tree, r.boxes, periodic);
+  std::vector<NeighborPair> p = neighbor_pairs(r.tree, r.boxes.ends(), periodic, backwards_on_two_threads);
+  std::vector<NeighborPair> serial = neighbor_pairs(r.tree, r.boxes.ends(), periodic);
   ASSERT_EQ(p.size(), serial.size());
   ASSERT_EQ(p.size(), r.neighbor_count);
   for (size_t i = 0; i < p.size(); ++i) {
@@ -135,7 +135,7 @@ TEST(NeighborhoodGraph, StreamedMGivesTheWholeMsResults) {
   AspectsResult r = compute_aspects(m, cfg);
   std::vector<bool> periodic;
   for (const auto& v : m.vars) periodic.push_back(v.periodic);
-  std::vector<NeighborPair> M = neighbor_pairs(r.tree, r.boxes, periodic);
+  std::vector<NeighborPair> M = neighbor_pairs(r.tree, r.boxes.ends(), periodic);
   ASSERT_EQ(M.size(), r.neighbor_count);
   ASSERT_GT(r.neighbors.size(), 1000u);
   ASSERT_EQ(r.certified_links.size(), r.neighbors.size());
@@ -146,11 +146,11 @@ TEST(NeighborhoodGraph, StreamedMGivesTheWholeMsResults) {
     while (at < M.size() && (M[at].a != e.a || M[at].b != e.b)) ++at;
     ASSERT_LT(at, M.size()) << "link " << i << " is not in M, or out of M's order";
     EXPECT_EQ(M[at].shift_code, e.shift_code);
-    EXPECT_TRUE(r.certified[e.a] && r.certified[e.b]);
+    EXPECT_TRUE(r.boxes.certified(e.a) && r.boxes.certified(e.b));
     ++at;
   }
-  SeparationResult whole = separate_by_signs(r.boxes.size(), int(r.factors.size()), r.signs,
-                                             r.certified, M, &r.csnc);
+  SeparationResult whole = separate_by_signs(r.boxes.size(), int(r.factors.size()), r.boxes.sign_column(),
+                                             r.boxes.certified_column(), M, &r.csnc);
   EXPECT_EQ(whole.lower_bound, 10);
   EXPECT_EQ(r.separation.lower_bound, whole.lower_bound);
   EXPECT_EQ(r.separation.per_class, whole.per_class);
