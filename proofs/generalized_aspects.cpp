@@ -30,7 +30,7 @@ void count_leaves(AspectsResult& out) {
 }  // namespace
 
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
-  PhaseClock clock;
+  PhaseClock clock(config.phase_done);
   Parallel parallel(config.threads);
   AspectsResult out;
   out.factors = determinant_factors(model);  // adds nodes: before any evaluator exists

@@ -57,3 +57,11 @@ add_test(NAME paper_repro.quick
          COMMAND ${PROJECT_SOURCE_DIR}/paper_repro/run_all.sh --quick --build ${PROJECT_BINARY_DIR}
                  --out ${CMAKE_CURRENT_BINARY_DIR}/paper_repro_quick)
 set_tests_properties(paper_repro.quick PROPERTIES TIMEOUT 1200 LABELS "acceptance;slow")
+
+# Runs stopped after their search, each partial certificate checked by check_cert.
+if(TARGET check_cert)
+  aspects_engine_test(test_phase_stops core 300)
+  target_link_libraries(test_phase_stops PRIVATE aspects_cert_writer)
+  target_compile_definitions(test_phase_stops PRIVATE CHECK_CERT="$<TARGET_FILE:check_cert>")
+  add_dependencies(test_phase_stops check_cert)
+endif()

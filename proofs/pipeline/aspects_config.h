@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "certificate_sink.h"
@@ -40,6 +41,9 @@ struct AspectsConfig {
   std::function<void(const SearchState&, const std::vector<uint8_t>& done)> checkpoint;
   double checkpoint_seconds = 0;
   std::function<void(const SearchStats&)> progress;
+  // Told of each phase as it ends (its name as in summary.json's `phases`, its seconds),
+  // on the calling thread.
+  std::function<void(const std::string& phase, double seconds)> phase_done;
 
   bool stopped() const { return stop && stop->poll(); }
 };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,12 +15,16 @@ namespace aspects {
 class PhaseClock {
  public:
   using Laps = std::vector<std::pair<std::string, double>>;
-  PhaseClock() : start_(std::chrono::steady_clock::now()), last_(start_) {}
+  using Listener = std::function<void(const std::string& phase, double seconds)>;
+  // `listener`, when set, hears of each phase as it ends.
+  explicit PhaseClock(Listener listener = {})
+      : start_(std::chrono::steady_clock::now()), last_(start_), listener_(std::move(listener)) {}
   void lap(const char* phase) {
     auto now = std::chrono::steady_clock::now();
     seconds_.emplace_back(phase, std::chrono::duration<double>(now - last_).count());
     peak_mib_.emplace_back(phase, peak_resident_bytes() / (1024.0 * 1024.0));
     last_ = now;
+    if (listener_) listener_(phase, seconds_.back().second);
   }
   double total_seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -29,6 +34,7 @@ class PhaseClock {
 
  private:
   std::chrono::steady_clock::time_point start_, last_;
+  Listener listener_;
   Laps seconds_, peak_mib_;
 };
 
