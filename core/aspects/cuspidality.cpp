@@ -160,8 +160,8 @@ std::vector<std::pair<int32_t, int32_t>> candidates_by_strips(const BoxStore& R,
   }
   std::vector<std::pair<int32_t, int32_t>> out;
   if (e.empty()) return out;
-  // About 1.5 mean widths per strip (4 visited more pairs: "one pose, two commands" on
-  // 3-RPR at eps 0.6 took 4.5 s instead of 3.4), at most 65,536 strips.
+  // About 1.5 mean widths per strip: wider strips visit more pairs, narrower ones hold
+  // each box in more strips (bench/RESULTS.md measures the choice). At most 65,536 strips.
   const double W = std::max(1.5 * widths / double(e.size()), (hi1 - lo1) / 65536);
   const int strips = W > 0 ? int((hi1 - lo1) / W) + 1 : 1;
   auto strip_of = [&](double x) {

@@ -153,8 +153,7 @@ bool stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& 
 
   // Blocks of consecutive boxes a, each with its own output: sorted within the block,
   // they follow each other in (a, b) order. A round holds 1/256 of the boxes, so that its
-  // pairs stay a small part of M (at 1/32, 130 MB on 3-RPR at eps 0.3, where M holds
-  // 229 M pairs).
+  // pairs stay a small part of M, which may not fit in memory whole.
   const int block = std::max(2048, R.size() / 4096 + 1);
   const int blocks = (R.size() + block - 1) / block, round = 16;
   std::vector<std::vector<NeighborPair>> found(round);
