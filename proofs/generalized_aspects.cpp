@@ -30,9 +30,13 @@ void count_leaves(AspectsResult& out) {
 }  // namespace
 
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
-  PhaseClock clock(config.phase_done);
-  Parallel parallel(config.threads);
   AspectsResult out;
+  // The phase during which a stop was first seen: it and those after it are partial.
+  PhaseClock clock([&](const std::string& phase, double seconds) {
+    if (out.stopped_in.empty() && config.stop && config.stop->stopped()) out.stopped_in = phase;
+    if (config.phase_done) config.phase_done(phase, seconds);
+  });
+  Parallel parallel(config.threads);
   out.factors = determinant_factors(model);  // adds nodes: before any evaluator exists
   SearchOutcome searched = search_phase(model, config, out.factors, parallel, clock);
   out.boxes = std::move(searched.boxes);

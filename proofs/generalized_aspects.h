@@ -52,6 +52,7 @@ struct AspectsResult {
   // proofs/pipeline/): fewer links, a smaller bound, fewer witnesses; every claim holds.
   long unexplored = 0;
   StopReason stopped_by = StopReason::None;
+  std::string stopped_in;  // the phase (summary.json's name) during which it stopped
   bool complete() const { return stopped_by == StopReason::None; }
   double seconds = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;  // wall time per phase

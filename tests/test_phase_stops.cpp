@@ -66,6 +66,7 @@ TEST(PhaseStops, AfterTheSearchNoLinkNoBoundBeyondOneNoWitness) {
 
   Stopped s = solve_stopped_after("merge", "merge");
   EXPECT_EQ(s.r.stopped_by, StopReason::Signal);
+  EXPECT_EQ(s.r.stopped_in, "neighbourhood graph, separation and links");
   EXPECT_FALSE(s.r.complete());
   // The search itself was whole: the same boxes.
   EXPECT_EQ(s.r.boxes.size(), whole.boxes.size());
@@ -85,6 +86,7 @@ TEST(PhaseStops, AfterTheSeparationTheBoundStandsAndNoWitnessIsSought) {
   const AspectsResult whole = solve_whole();
   Stopped s = solve_stopped_after("components and separation", "separation");
   EXPECT_EQ(s.r.stopped_by, StopReason::Signal);
+  EXPECT_EQ(s.r.stopped_in, "cuspidality");
   EXPECT_EQ(s.r.neighbor_count, whole.neighbor_count);
   EXPECT_EQ(s.r.certified_links.size(), whole.certified_links.size());
   EXPECT_EQ(s.r.csnc_sizes, whole.csnc_sizes);

@@ -12,13 +12,16 @@ CuspidalWitnesses witness_phase(const Model& model, const AspectsConfig& config,
                                 const OutputBoxes& boxes, const std::vector<int32_t>& csnc,
                                 int csncs, Parallel& parallel, PhaseClock& clock) {
   CuspidalWitnesses w;
-  if (config.stopped()) return w;
   std::vector<bool> periodic;
   for (const auto& v : model.vars) periodic.push_back(v.periodic);
   const WitnessSpace space(model.pose, model.command, periodic);
-  w = find_pose_witnesses(boxes.ends(), csnc, csncs, space, 10000, parallel.for_each());
+  if (!config.stopped())
+    w = find_pose_witnesses(boxes.ends(), csnc, csncs, space, 10000, parallel.for_each());
   clock.lap("cuspidality");
-  if (config.stopped()) return w;
+  if (config.stopped()) {
+    clock.lap("assembly witnesses");
+    return w;
+  }
   struct AssemblyProver {
     ModelEvaluator ev;
     HsWorkspace ws;

@@ -2,7 +2,7 @@
 // commands" (aspects/cuspidality.h), then "one command, two poses" (assembly-mode changes),
 // each proved in x at a point (proofs/assembly_witness.h). The CSNCs are searched in
 // parallel; the witnesses are the same for any number of threads. Every witness found is
-// proved; none is claimed to be the only one. Stopped before it starts, it looks for none.
+// proved; none is claimed to be the only one. Stopped, a search not begun is skipped.
 #pragma once
 
 #include <cstdint>
