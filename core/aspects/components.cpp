@@ -8,8 +8,7 @@ namespace aspects {
 
 Components connected_components(int n, const std::vector<std::pair<int32_t, int32_t>>& edges) {
   // Boost's union-find (that of Boost.Graph's incremental components) over the edges:
-  // 5 bytes per vertex, where an adjacency_list took about 100 per vertex and edge (on
-  // 3-RPR at eps 0.3, 2.6 M vertices, it raised the run's peak by 150 MiB).
+  // 5 bytes per vertex, where an adjacency_list takes about 100 per vertex and edge.
   std::vector<uint8_t> ranks(n);  // below log2(n)
   std::vector<int> parent(n);
   boost::disjoint_sets<uint8_t*, int*> sets(ranks.data(), parent.data());

@@ -197,8 +197,7 @@ WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members,
                     const std::vector<int>& apart_vars, int64_t cap, int64_t offers,
                     Accept accept) {
   // The sweep coordinate: a non-periodic one when there is one, the one where the boxes
-  // overlap least: the pairs the sweep visits are those that meet on it (on 3-RPR at eps
-  // 0.3 the first pose coordinate gave a 132 s search for no witness).
+  // overlap least: the pairs the sweep visits are those that meet on it.
   const std::vector<int> order = by_overlap(R, members, s, meet_vars);
   const int v0 = order.empty() ? meet_vars[0] : order[0];
   std::vector<Entry> e;
@@ -252,7 +251,7 @@ WitnessSearch sweep(const BoxStore& R, const std::vector<int32_t>& members,
     return taken >= cap || offered >= offers;
   };
   // With a second non-periodic coordinate, the candidates come from strips of it (the same
-  // list, far fewer pairs visited: 132 s for 3-RPR at eps 0.3 with one coordinate), and are
+  // list, far fewer pairs visited than by one coordinate), and are
   // offered in sweep order. Not under a budget of offers, which a full listing would exceed.
   const int v1 = offers == INT64_MAX && copies == 0 && order.size() > 1 ? order[1] : -1;
   if (v1 >= 0) {

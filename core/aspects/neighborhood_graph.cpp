@@ -16,8 +16,8 @@ namespace {
 // Hull of the output boxes below internal tree nodes: a reported box may leave its cell
 // (the Newton iterate can shift), so the cells alone cannot guide the search. A filter
 // only, so in floats rounded outward, and only for nodes above at least kMinBoxes output
-// boxes: below them the query tests the few boxes themselves. On 3-RPR at eps 0.3 the tree
-// has 22 M nodes; hulls in doubles for all of them took 1.8 GB.
+// boxes: below them the query tests the few boxes themselves. A tree has tens of millions
+// of nodes; hulls in doubles for all of them would outweigh the boxes.
 struct Hulls {
   static constexpr int32_t kMinBoxes = 8;
   const std::vector<SearchNode>& tree;
