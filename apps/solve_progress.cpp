@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "output_boxes.h"
 #include "search/stop_condition.h"
 
 namespace aspects {
@@ -60,7 +61,7 @@ void SolveProgress::done(const Model& m, const AspectsResult& r, double resident
   std::fprintf(stderr,
                "%s[aspects] done: %ld boxes processed, %d output boxes, %zu certified links, "
                "%.1f s, %.0f MiB%s\n",
-               tty_ ? "\r" : "", r.processed, r.boxes.size(), r.certified_links.size(),
+               tty_ ? "\r" : "", r.processed, output_box_count(r), r.certified_links.size(),
                r.seconds, resident_mib, stopped.c_str());
 }
 
@@ -68,12 +69,13 @@ double decided_share(const Model& m, const AspectsResult& r) {
   if (r.complete()) return 1;
   Box root = m.initial_box();
   double left = 0;
-  for (int b = 0; b < r.boxes.size(); ++b) {
-    if (r.undecided_kind[b] != UndecidedKind::Unexplored) continue;
+  const BoxStore& boxes = output_boxes(r);
+  for (int b = 0; b < output_box_count(r); ++b) {
+    if (!is_unexplored_box(r, b)) continue;
     double f = 1;
-    for (int v = 0; v < r.boxes.nv(); ++v) {
+    for (int v = 0; v < boxes.nv(); ++v) {
       double w = root[v].hi_up() - root[v].lo_down();
-      if (w > 0) f *= (r.boxes.hi(b, v) - r.boxes.lo(b, v)) / w;
+      if (w > 0) f *= (boxes.hi(b, v) - boxes.lo(b, v)) / w;
     }
     left += f;
   }
