@@ -15,20 +15,30 @@
 
 using namespace aspects;
 
-int main(int argc, char** argv) {
-  CLI::App app{"Certified generalized aspects of parallel robots (branch and prune)", "aspects"};
-  app.require_subcommand(1);
-  // CLI11 handles it like --help: given to the main command it prints and exits 0, whatever
-  // else is on the line; after a subcommand it is an unknown option of that subcommand.
-  app.set_version_flag("--version", std::string("aspects ") + ASPECTS_VERSION +
-                                        (*ASPECTS_GIT_COMMIT ? " (git " ASPECTS_GIT_COMMIT ")" : ""));
+namespace {
 
+// The subcommands as parsed: each command's options, and which one was chosen.
+struct Commands {
+  CLI::App* info = nullptr;
+  CLI::App* solve = nullptr;
+  CLI::App* query = nullptr;
+  CLI::App* path = nullptr;
   std::string info_model;
-  auto* info = app.add_subcommand("info", "Print a robot model: variables, equations, Jacobian patterns");
-  info->add_option("MODEL", info_model, "robot model file (.robot)")->required();
+  SolveOptions solve_options;
+  QueryOptions query_options;
+  PathOptions path_options;
+};
 
-  SolveOptions so;
-  auto* solve = app.add_subcommand("solve", "Compute certified CSNCs and the lower bound on aspects");
+void add_info(CLI::App& app, Commands& c) {
+  c.info = app.add_subcommand("info",
+                              "Print a robot model: variables, equations, Jacobian patterns");
+  c.info->add_option("MODEL", c.info_model, "robot model file (.robot)")->required();
+}
+
+void add_solve(CLI::App& app, Commands& c) {
+  SolveOptions& so = c.solve_options;
+  auto* solve = c.solve =
+      app.add_subcommand("solve", "Compute certified CSNCs and the lower bound on aspects");
   solve->add_option("MODEL", so.model_path, "robot model file; default: the embedded RRRRR five-bar");
   solve->add_option("--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1);
   solve->add_option("--prec", so.prec, "MPFI precision in bits (>= 24)")->default_val(53);
@@ -66,18 +76,22 @@ int main(int argc, char** argv) {
   solve->add_option("--resume", so.resume_dir,
                     "continue the stopped run of DIR from its checkpoint (same outputs as an "
                     "uninterrupted run)");
+}
 
-  QueryOptions qo;
-  auto* query =
+void add_query(CLI::App& app, Commands& c) {
+  QueryOptions& qo = c.query_options;
+  auto* query = c.query =
       app.add_subcommand("query", "Certified commands of a pose, from a result directory");
   query->add_option("RESULT_DIR", qo.result_dir, "directory written by `aspects solve --out`")
       ->required();
   query->add_option("--pose", qo.pose, "the pose, comma-separated in pose order (e.g. 3,5)")
       ->required();
   query->add_flag("--json", qo.json, "print one JSON object");
+}
 
-  PathOptions po;
-  auto* path = app.add_subcommand(
+void add_path(CLI::App& app, Commands& c) {
+  PathOptions& po = c.path_options;
+  auto* path = c.path = app.add_subcommand(
       "path", "Certified singularity-free path between two poses in one CSNC");
   path->add_option("RESULT_DIR", po.result_dir, "directory written by `aspects solve --out`")
       ->required();
@@ -86,32 +100,32 @@ int main(int argc, char** argv) {
   path->add_option("--csnc", po.csnc, "stay in this CSNC (default: the largest holding both)");
   path->add_flag("--json", po.json, "print one JSON object");
   path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
+}
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "aspects: " << e.what() << "\n(run 'aspects --help' for usage)\n";
-    return 2;
+// The options of `solve` given on the command line: a resumed run refuses those that
+// differ from its checkpoint, and the model's `bisect` statement yields to --bisect.
+void record_given_options(Commands& c) {
+  for (const char* name : {"MODEL", "--eps", "--prec", "--tau", "--bisect", "--all-links",
+                           "--no-cert", "--out", "--checkpoint"})
+    if (c.solve->count(name) > 0) c.solve_options.given.push_back(name);
+}
+
+int run_command(Commands& c) {
+  if (*c.info) {
+    Model m = load_model(c.info_model);
+    print_model_info(m, std::cout);
+    return 0;
   }
+  record_given_options(c);
+  if (*c.query) return run_query(c.query_options);
+  if (*c.path) return run_path(c.path_options);
+  return run_solve(c.solve_options);
+}
 
+// Runs the chosen command; an error is reported on stderr with its exit status.
+int run_reporting_errors(Commands& c) {
   try {
-    if (*info) {
-      Model m = load_model(info_model);
-      print_model_info(m, std::cout);
-      return 0;
-    }
-    for (const char* name : {"MODEL", "--eps", "--prec", "--tau", "--bisect", "--all-links",
-                             "--no-cert", "--out", "--checkpoint"})
-      if (solve->count(name) > 0) so.given.push_back(name);
-    if (*query) return run_query(qo);
-    if (*path) return run_path(po);
-    return run_solve(so);
+    return run_command(c);
   } catch (const IndexError& e) {
     std::cerr << "aspects: " << e.what() << '\n';
     return 2;
@@ -131,4 +145,34 @@ int main(int argc, char** argv) {
     std::cerr << "aspects: " << e.what() << '\n';
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Certified generalized aspects of parallel robots (branch and prune)", "aspects"};
+  app.require_subcommand(1);
+  // CLI11 handles it like --help: given to the main command it prints and exits 0, whatever
+  // else is on the line; after a subcommand it is an unknown option of that subcommand.
+  app.set_version_flag("--version", std::string("aspects ") + ASPECTS_VERSION +
+                                        (*ASPECTS_GIT_COMMIT ? " (git " ASPECTS_GIT_COMMIT ")" : ""));
+
+  Commands commands;
+  add_info(app, commands);
+  add_solve(app, commands);
+  add_query(app, commands);
+  add_path(app, commands);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "aspects: " << e.what() << "\n(run 'aspects --help' for usage)\n";
+    return 2;
+  }
+  return run_reporting_errors(commands);
 }

@@ -88,8 +88,8 @@ class In : public LeReader {
 
 void write_part(Out& o, const SearchPart& part, uint32_t p) {
   o.u32(uint32_t(part.tree.size()));
-  // The node as the format has it since before nodes were packed: left and right child
-  // (-1 for a leaf), split variable, split point, leaf index (-1 for an internal node).
+  // The format's node, whatever SearchNode's packing: left and right child (-1 for a
+  // leaf), split variable, split point, leaf index (-1 for an internal node).
   for (const SearchNode& s : part.tree) {
     o.i32(s.internal() ? s.left() : -1);
     o.i32(s.internal() ? s.right() : -1);
@@ -107,10 +107,10 @@ void write_part(Out& o, const SearchPart& part, uint32_t p) {
   for (uint32_t b = 0; b < boxes; ++b) o.u8(uint8_t(r.kind(b)));
   for (size_t i = 0; i < size_t(boxes) * p; ++i) o.u8(uint8_t(r.sign_column()[i]));
   const SearchDiagnostics& d = part.diagnostics;
-  for (int k = 0; k < kVerdicts; ++k) o.u64(uint64_t(d.attempts[k]));
-  for (int k = 0; k < kVerdicts; ++k) o.u64(uint64_t(d.undecided[k]));
+  for (int k = 0; k < kVerdicts; ++k) o.i64(d.attempts[k]);
+  for (int k = 0; k < kVerdicts; ++k) o.i64(d.undecided[k]);
   for (long x : {d.refuted_by_equation, d.refuted_by_newton, d.refuted_by_constraint})
-    o.u64(uint64_t(x));
+    o.i64(x);
 }
 
 // Reads a part and checks that its indices stay in range (the merge trusts them);
@@ -153,10 +153,10 @@ void read_part(In& in, SearchPart& part, const CheckpointHeader& h, uint32_t def
   part.boxes = OutputBoxes::from_columns(int(h.nv), int(h.p), coords, std::move(certified),
                                          std::move(kinds), std::move(signs));
   SearchDiagnostics& d = part.diagnostics;
-  for (int k = 0; k < kVerdicts; ++k) d.attempts[k] = long(in.u64());
-  for (int k = 0; k < kVerdicts; ++k) d.undecided[k] = long(in.u64());
+  for (int k = 0; k < kVerdicts; ++k) d.attempts[k] = long(in.i64());
+  for (int k = 0; k < kVerdicts; ++k) d.undecided[k] = long(in.i64());
   for (long* x : {&d.refuted_by_equation, &d.refuted_by_newton, &d.refuted_by_constraint})
-    *x = long(in.u64());
+    *x = long(in.i64());
   for (const SearchNode& s : part.tree) {
     if (s.internal()) continue;
     if (s.fate == LeafFate::Deferred) {
@@ -192,7 +192,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
   o.str(h.model_file);
   o.f64(h.eps);
   o.f64(h.tau);
-  o.u64(uint64_t(h.precision));
+  o.i64(h.precision);
   o.str(h.bisect);
   o.u8(h.all_links);
   o.u8(h.no_cert);
@@ -252,7 +252,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   h.model_file = in.str();
   h.eps = in.f64();
   h.tau = in.f64();
-  h.precision = int64_t(in.u64());
+  h.precision = in.i64();
   h.bisect = in.str();
   h.all_links = in.u8();
   h.no_cert = in.u8();

@@ -1,4 +1,4 @@
-// The resumable state of `aspects solve --checkpoint SECONDS --out DIR` (issue 12):
+// The resumable state of `aspects solve --checkpoint SECONDS --out DIR`:
 // DIR/checkpoint, read back by `aspects solve --resume DIR`.
 //
 // It holds the search's state (proofs/search_state.h: the top of the tree, the subtrees it

@@ -25,6 +25,7 @@ class LeReader {
   uint32_t u32() { return uint32_t(take(4)); }
   uint8_t u8() { return uint8_t(take(1)); }
   int32_t i32() { return int32_t(u32()); }
+  int64_t i64() { return int64_t(u64()); }
   // The double with these bits (any, NaN included: the caller decides what it accepts).
   double f64_bits() {
     uint64_t v = u64();

@@ -24,6 +24,7 @@ class LeWriter {
   }
   void u8(uint8_t v) { bytes(&v, 1); }
   void i32(int32_t v) { u32(uint32_t(v)); }
+  void i64(int64_t v) { u64(uint64_t(v)); }
   void f64(double d) {
     uint64_t v;
     std::memcpy(&v, &d, 8);

@@ -1,5 +1,6 @@
 #include "result_index.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -102,7 +103,7 @@ ResultIndex index_header(const Model& model, const AspectsResult& r, long precis
   idx.precision_bits = precision_bits;
   idx.tau = tau;
   idx.eps = eps;
-  idx.nv = uint32_t(r.boxes.nv());
+  idx.nv = uint32_t(r.boxes.ends().nv());
   idx.n = uint32_t(model.n());
   for (const auto& f : r.factors) idx.factors.push_back({f.origin, f.text});
   idx.csnc_count = uint32_t(r.csnc_sizes.size());
@@ -112,7 +113,7 @@ ResultIndex index_header(const Model& model, const AspectsResult& r, long precis
 
 // Where the records of an index go, in file order: into a ResultIndex
 // (build_result_index) or straight to the file (write_result_index). The records are
-// built one at a time in the same temporaries: held whole, they took more memory than
+// built one at a time in the same temporaries: held whole, they would take more memory than
 // the search's boxes (three small vectors per box).
 class RecordSink {
  public:
@@ -125,11 +126,13 @@ class RecordSink {
   virtual void link(const IndexLink& l) = 0;
 };
 
-void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) {
+// The solution boxes; returns each output box's place among them (-1: not one), for
+// the links.
+std::vector<int32_t> emit_solutions(const AspectsResult& r, RecordSink& sink) {
+  const BoxStore& boxes = r.boxes.ends();
   const size_t p = r.factors.size();
   uint32_t solutions = 0;
   for (int b = 0; b < r.boxes.size(); ++b) solutions += r.boxes.certified(b);
-  // Each box's place among the solution boxes, for the links.
   std::vector<int32_t> solution_index(r.boxes.size(), -1);
   IndexSolutionBox s;
   sink.begin_solutions(solutions);
@@ -139,14 +142,21 @@ void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) 
     s.csnc = r.csnc[b];
     s.lo.clear();
     s.hi.clear();
-    for (int v = 0; v < r.boxes.nv(); ++v) {
-      s.lo.push_back(r.boxes.lo(b, v));
-      s.hi.push_back(r.boxes.hi(b, v));
+    for (int v = 0; v < boxes.nv(); ++v) {
+      s.lo.push_back(boxes.lo(b, v));
+      s.hi.push_back(boxes.hi(b, v));
     }
     s.signs.assign(r.boxes.signs(b), r.boxes.signs(b) + p);
     solution_index[b] = k++;
     sink.solution(s);
   }
+  return solution_index;
+}
+
+// The other output boxes, by their pose part.
+void emit_undecided(const Model& model, const AspectsResult& r, uint32_t solutions,
+                    RecordSink& sink) {
+  const BoxStore& boxes = r.boxes.ends();
   IndexUndecidedBox u;
   sink.begin_undecided(uint32_t(r.boxes.size()) - solutions);
   for (int b = 0; b < r.boxes.size(); ++b) {
@@ -156,11 +166,15 @@ void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) 
     u.lo.clear();
     u.hi.clear();
     for (int v : model.pose) {
-      u.lo.push_back(r.boxes.lo(b, v));
-      u.hi.push_back(r.boxes.hi(b, v));
+      u.lo.push_back(boxes.lo(b, v));
+      u.hi.push_back(boxes.hi(b, v));
     }
     sink.undecided(u);
   }
+}
+
+void emit_links(const Model& model, const AspectsResult& r,
+                const std::vector<int32_t>& solution_index, RecordSink& sink) {
   const bool kept = r.link_proofs.size() == r.certified_links.size();
   IndexLink l;
   sink.begin_links(uint32_t(r.certified_links.size()));
@@ -175,6 +189,15 @@ void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) 
       l.witness = recompute_witness(model, r.boxes.ends(), pair);
     sink.link(l);
   }
+}
+
+void emit_records(const Model& model, const AspectsResult& r, RecordSink& sink) {
+  const std::vector<int32_t> solution_index = emit_solutions(r, sink);
+  const uint32_t solutions =
+      uint32_t(std::count_if(solution_index.begin(), solution_index.end(),
+                             [](int32_t k) { return k >= 0; }));
+  emit_undecided(model, r, solutions, sink);
+  emit_links(model, r, solution_index, sink);
 }
 
 class CollectRecords : public RecordSink {
@@ -209,7 +232,7 @@ void encode_header(const ResultIndex& idx, Writer& w) {
   w.u32(idx.nv);
   w.u32(idx.n);
   w.u32(uint32_t(idx.factors.size()));
-  w.u64(uint64_t(idx.precision_bits));
+  w.i64(idx.precision_bits);
   w.f64(idx.tau);
   w.f64(idx.eps);
   w.str(idx.model_file);

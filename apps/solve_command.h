@@ -22,7 +22,7 @@ struct SolveOptions {
   bool quiet = false;
   bool mpfi_only = false;  // no double fast path at 53 bits (core/numerics/interval.h)
   std::string bisect = "round-robin";
-  // Limits of a long run (issue 12); negative: none. A stopped run writes a partial
+  // Limits of a long run; negative: none. A stopped run writes a partial
   // result and exits with kExitStopped.
   double time_limit = -1;    // seconds
   long max_boxes = -1;       // boxes processed

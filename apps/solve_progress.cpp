@@ -49,6 +49,11 @@ void SolveProgress::tick(const SearchStats& s) {
                tty_ ? "   " : "\n");
 }
 
+void SolveProgress::phase(const std::string& name, double seconds) {
+  std::fprintf(stderr, "%s[aspects] %s: %.1f s, %.0f MiB\n", tty_ ? "\r" : "", name.c_str(),
+               seconds, mib(resident_bytes()));
+}
+
 void SolveProgress::done(const Model& m, const AspectsResult& r, double resident_mib) {
   std::string stopped;
   if (!r.complete()) {
@@ -68,12 +73,13 @@ double decided_share(const Model& m, const AspectsResult& r) {
   if (r.complete()) return 1;
   Box root = m.initial_box();
   double left = 0;
+  const BoxStore& boxes = r.boxes.ends();
   for (int b = 0; b < r.boxes.size(); ++b) {
-    if (r.boxes.kind(b) != UndecidedKind::Unexplored) continue;
+    if (!r.boxes.unexplored(b)) continue;
     double f = 1;
-    for (int v = 0; v < r.boxes.nv(); ++v) {
+    for (int v = 0; v < boxes.nv(); ++v) {
       double w = root[v].hi_up() - root[v].lo_down();
-      if (w > 0) f *= (r.boxes.hi(b, v) - r.boxes.lo(b, v)) / w;
+      if (w > 0) f *= (boxes.hi(b, v) - boxes.lo(b, v)) / w;
     }
     left += f;
   }

@@ -17,6 +17,8 @@ class SolveProgress {
   explicit SolveProgress(bool tty) : tty_(tty) {}
   // Called from the search (any thread, one at a time): prints a line now and then.
   void tick(const SearchStats& s);
+  // Called as each phase ends (the phases after the search run minutes on large results).
+  void phase(const std::string& name, double seconds);
   // The last line, after the search; a stopped run also says how much it decided.
   void done(const Model& m, const AspectsResult& r, double resident_mib);
 

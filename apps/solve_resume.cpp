@@ -75,6 +75,25 @@ int remove_stale_temporaries(const std::string& dir) {
   return removed;
 }
 
+std::unique_ptr<Checkpoint> open_resumed_run(SolveOptions& o) {
+  if (o.resume_dir.empty()) return nullptr;
+  auto resumed =
+      std::make_unique<Checkpoint>(read_checkpoint(o.resume_dir + "/" + kCheckpointName));
+  adopt_checkpoint(o, resumed->header);
+  remove_stale_temporaries(o.out_dir);  // a killed run's
+  return resumed;
+}
+
+void resume_search(Checkpoint& resumed, CertificateWriter* cert, AspectsConfig& cfg) {
+  SearchState& st = resumed.state;
+  if (cert && st.top_done) {
+    cert->restore(-1, resumed.top_records);
+    for (size_t k = 0; k < st.deferred.size(); ++k)
+      if (st.done[k]) cert->restore(int32_t(k), resumed.records[k]);
+  }
+  cfg.resume = &st;
+}
+
 Model resumed_model(const SolveOptions& o, const CheckpointHeader& h) {
   if (!o.was_given("MODEL"))
     return parse_model(h.model_text, h.model_file.empty() ? "(embedded RRRRR)" : h.model_file);

@@ -3,11 +3,24 @@
 // state is never mixed with another model, eps, precision or program version.
 #pragma once
 
+#include <memory>
+
+#include "certificate_writer.h"
 #include "checkpoint.h"
+#include "generalized_aspects.h"
 #include "model/model.h"
 #include "solve_command.h"
 
 namespace aspects {
+
+// With --resume DIR: reads DIR's checkpoint, takes the run's options from it (see
+// adopt_checkpoint) and removes the temporaries a killed run left there. Null without
+// --resume.
+std::unique_ptr<Checkpoint> open_resumed_run(SolveOptions& o);
+
+// Hands the checkpoint's state to the engine (its finished parts are not searched again)
+// and puts the certificate records of those parts back into `cert` (null: no certificate).
+void resume_search(Checkpoint& resumed, CertificateWriter* cert, AspectsConfig& cfg);
 
 // Sets o's eps, precision, tau, bisector, links mode, certificate, output directory and
 // checkpoint interval from h (refusing a version or explicit option that differs).

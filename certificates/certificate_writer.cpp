@@ -33,13 +33,13 @@ std::string sha256_hex(const std::string& data) {
 
 CertificateWriter::CertificateWriter(const std::string& path, const Model& model,
                                      long precision, double tau, double eps, bool compress)
-    : path_(path), tmp_(path + ".tmp." + std::to_string(getpid())), compressed_(compress) {
-  f_ = std::fopen(tmp_.c_str(), "wb");
-  if (!f_) throw std::runtime_error("cannot write " + tmp_);
-  // Level 3 (zstd's default) on one helper thread, beside the writing of the records:
-  // 3.1x smaller on RRRRR (bench/RESULTS.md).
-  if (compress && !(f_ = open_compressed_output(f_, 3, 1)))
-    throw std::runtime_error("cannot compress " + tmp_ + ": " + std::strerror(errno));
+    : file_(path), compressed_(compress) {
+  f_ = file_.stream();
+  // Level 3 (zstd's default) on one helper thread, beside the writing of the records
+  // (bench/RESULTS.md has the sizes).
+  if (compress && !(f_ = open_compressed_output(file_.stream(), 3, 1)))
+    throw std::runtime_error("cannot compress " + file_.temporary_path() + ": " +
+                             std::strerror(errno));
   static char buffer[1 << 20];
   std::setvbuf(f_, buffer, _IOFBF, sizeof buffer);
   n_ = model.n();
@@ -58,9 +58,9 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
   end_line();
 }
 
+// An unfinished certificate's temporary is removed by file_.
 CertificateWriter::~CertificateWriter() {
-  if (f_) std::fclose(f_);
-  if (!finished_) std::remove(tmp_.c_str());
+  if (compressed_ && f_) std::fclose(f_);
 }
 
 void CertificateWriter::line(const std::string& s) {
@@ -98,7 +98,8 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
   line("factors " + std::to_string(p_));
   for (const auto& f : factors) line("factor " + f.kind);
   line("tree");
-  if (!top_) top_ = std::make_unique<TreeRecordFile>(tmp_ + ".top", p_, n_);  // else restored
+  if (!top_)  // else restored
+    top_ = std::make_unique<TreeRecordFile>(file_.temporary_path() + ".top", p_, n_);
 }
 
 std::string CertificateWriter::records(int32_t task) {
@@ -117,14 +118,15 @@ void CertificateWriter::restore(int32_t task, const std::string& records) {
     slot = &tasks_[task];
   }
   std::string name = task < 0 ? ".top" : ".t" + std::to_string(task);
-  *slot = std::make_unique<TreeRecordFile>(tmp_ + name, p_, n_);
+  *slot = std::make_unique<TreeRecordFile>(file_.temporary_path() + name, p_, n_);
   (*slot)->write(records);
   (*slot)->close();
 }
 
 TreeSink* CertificateWriter::subtree(int32_t task) {
   if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);
-  tasks_[task] = std::make_unique<TreeRecordFile>(tmp_ + ".t" + std::to_string(task), p_, n_);
+  const std::string name = file_.temporary_path() + ".t" + std::to_string(task);
+  tasks_[task] = std::make_unique<TreeRecordFile>(name, p_, n_);
   return tasks_[task].get();
 }
 
@@ -280,15 +282,15 @@ void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
   line("claim filtered " + std::to_string(r.filtered));
   line("claim lower-bound " + std::to_string(r.separation.lower_bound));
   line("end " + std::to_string(lines_));
-  // A compressed stream fsyncs its file when closed.
-  bool ok = std::fflush(f_) == 0 && !std::ferror(f_) && (compressed_ || fsync(fileno(f_)) == 0);
-  int err = ok ? 0 : errno;
-  ok = std::fclose(f_) == 0 && ok;
-  err = err ? err : errno;
+  close();
+}
+
+// Ends the compressed frame (if any), then syncs and renames the file into place.
+void CertificateWriter::close() {
+  FILE* out = f_;
   f_ = nullptr;
-  if (!ok || std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(err ? err : errno ? errno : EIO));
-  finished_ = true;
+  if (compressed_ && std::fclose(out) != 0) file_.fail(errno);
+  file_.commit();
 }
 
 }  // namespace aspects

@@ -1,6 +1,6 @@
 // Writes the certificate of a run (format: certificates/FORMAT.md) while solving.
-// The file is written under a temporary name and renamed by finish(); a run that
-// stops early leaves nothing behind.
+// The file is an AtomicFile, renamed into place by finish(); a run that stops early
+// leaves nothing behind.
 #pragma once
 
 #include <cstdio>
@@ -10,6 +10,7 @@
 
 #include "certificate_sink.h"
 #include "generalized_aspects.h"
+#include "io/atomic_file.h"
 
 namespace aspects {
 
@@ -74,14 +75,14 @@ class CertificateWriter : public CertificateSink {
   void interval(const Interval& x);
   void end_line();
   void splice(TreeRecordFile& stream);
+  void close();
 
-  std::string path_, tmp_;
+  AtomicFile file_;
+  FILE* f_ = nullptr;  // file_'s stream, or the compressor layered over it
   std::unique_ptr<TreeRecordFile> top_;
   std::vector<std::unique_ptr<TreeRecordFile>> tasks_;
-  FILE* f_ = nullptr;
   int p_ = 0, n_ = 0;
   long lines_ = 0, leaves_ = 0, bytes_ = 0;
-  bool finished_ = false;
   bool compressed_ = false;
 };
 

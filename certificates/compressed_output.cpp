@@ -1,6 +1,6 @@
 #include "compressed_output.h"
 
-#include <unistd.h>
+#include <sys/types.h>
 #include <zstd.h>
 
 #include <cerrno>
@@ -45,13 +45,8 @@ ssize_t write_compressed(void* cookie, const char* data, size_t n) {
 int close_compressed(void* cookie) {
   Compressor* z = static_cast<Compressor*>(cookie);
   ZSTD_inBuffer none{nullptr, 0, 0};
-  bool ok = !z->failed && pump(*z, none, ZSTD_e_end);
-  int err = ok ? 0 : (errno ? errno : EIO);
-  ok = std::fflush(z->raw) == 0 && !std::ferror(z->raw) && ok;
-  ok = ok && fsync(fileno(z->raw)) == 0;
-  if (!ok && !err) err = errno ? errno : EIO;
-  ok = std::fclose(z->raw) == 0 && ok;
-  if (!ok && !err) err = errno ? errno : EIO;
+  const bool ok = !z->failed && pump(*z, none, ZSTD_e_end);
+  const int err = ok ? 0 : (errno ? errno : EIO);
   ZSTD_freeCCtx(z->cctx);
   delete z;
   if (ok) return 0;
@@ -75,7 +70,6 @@ FILE* open_compressed_output(FILE* raw, int level, int workers) {
   FILE* f = ok ? fopencookie(z, "w", io) : nullptr;
   if (!f) {
     ZSTD_freeCCtx(z->cctx);
-    std::fclose(raw);
     delete z;
     errno = errno ? errno : ENOMEM;
   }

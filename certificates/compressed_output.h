@@ -7,10 +7,11 @@
 
 namespace aspects {
 
-// Takes ownership of `raw`. Writes to the returned stream are compressed at `level` on
-// `workers` helper threads of libzstd (0: on the writer's thread). fclose() on it ends the
-// frame, flushes and fsyncs `raw`, closes it, and returns 0 only if every byte reached the
-// file. Returns null (raw closed, errno set) if libzstd cannot be set up.
+// Writes to the returned stream are compressed at `level` on `workers` helper threads of
+// libzstd (0: on the writer's thread) and written to `raw`, which stays the caller's to
+// flush, sync and close. fclose() on the returned stream ends the frame and returns 0 only
+// if every compressed byte was handed to `raw` (else EOF, errno set). Returns null (errno
+// set) if libzstd cannot be set up.
 FILE* open_compressed_output(FILE* raw, int level, int workers);
 
 }  // namespace aspects

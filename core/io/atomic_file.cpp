@@ -26,6 +26,10 @@ void AtomicFile::note_failure() {
   if (!err_) err_ = errno ? errno : EIO;
 }
 
+void AtomicFile::fail(int err) {
+  if (!err_) err_ = err ? err : EIO;
+}
+
 void AtomicFile::write(const void* data, size_t n) {
   if (!err_ && std::fwrite(data, 1, n, f_) != n) note_failure();
 }

@@ -19,6 +19,13 @@ class AtomicFile {
 
   void write(const void* data, size_t n);
   void write(const std::string& s) { write(s.data(), s.size()); }
+  // The temporary's stream, for a writer that formats into it or layers another stream
+  // over it (a compressor). Its write errors are seen by commit(); it stays open until then.
+  FILE* stream() const { return f_; }
+  const std::string& temporary_path() const { return tmp_; }
+  // A failure the caller found on a stream layered over stream() (errno's value; the first
+  // failure is the one reported): commit() then fails.
+  void fail(int err);
   // Flushes, fsyncs, closes and renames; then fsyncs the directory (best effort).
   // Throws std::runtime_error "cannot write PATH: REASON" on failure.
   void commit();
