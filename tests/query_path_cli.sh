@@ -2,7 +2,7 @@
 # `aspects query` and `aspects path` on damaged result directories (exit 2, a message
 # naming the problem), `aspects path --plot` writing a PNG, and a periodic pose: a query
 # modulo 2π and a path across the ±π seam through a certified link, printed unwrapped;
-# poses shifted by whole turns onto box faces (issue 33: they were denied). $2: a result
+# poses shifted by whole turns onto box faces, answered as the unshifted ones. $2: a result
 # directory written by `aspects solve --out` for RRRRR (the query_fixture test); $3: the
 # model tests/models/seam_pose.robot.
 set -eu
@@ -67,8 +67,8 @@ awk -F'[()]' '/^  (start|witness|goal)/ { if (n++ && $2 + 0 <= last) bad = 1; la
 "$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 --json | grep -q '"turns":\[1\]' ||
   fail "the goal's turns are not [1] in --json"
 
-# Issue 33: 4.71238898038469 is -π/2 + 2π to an ulp, on a face of the helix's subdivision
-# after the shift; at 24 bits the conservative test missed a window about 5e-7 wide.
+# 4.71238898038469 is -π/2 + 2π to an ulp, on a face of the helix's subdivision after the
+# shift; at 24 bits a test sure only of "inside" misses a window about 5e-7 wide.
 cat > "$tmp/helix.robot" <<'M'
 robot HELIX
 pose    x in [-pi, pi] periodic
@@ -95,8 +95,8 @@ for prec in 53 24; do
   expect 0 "^certified singularity-free path in CSNC 0" \
     "$aspects" path "$tmp/helix$prec" --from 4.71238898038469 --to 0.5
 done
-# 3-RPR at eps 4: x3 = -M_PI lies in box 19817 as x3 = M_PI does (it was "only in
-# undecided boxes").
+# 3-RPR at eps 4: x3 = -M_PI lies in box 19817 as x3 = M_PI does (-M_PI + 2π is within
+# the root cell's rounding of π).
 rpr=$(dirname "$0")/../robots/3rpr.robot
 "$aspects" solve "$rpr" --eps 4 --threads 1 --no-cert --quiet --out "$tmp/rpr4"
 for x3 in -3.141592653589793 3.141592653589793 9.42477796076938; do

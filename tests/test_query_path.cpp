@@ -85,7 +85,7 @@ LoadedResult solve_text(const std::string& text, double eps, int prec) {
   return load_result_from(build_result_index(m, res, prec, cfg.tau, cfg.eps, "(test)"), "(test)");
 }
 
-// The helix of issue 33: q = 2x + 4πm solves it, so every pose has commands.
+// A helix: q = 2x + 4πm solves it, so every pose has commands.
 const char* kHelix =
     "robot HELIX\npose    x in [-pi, pi] periodic\ncommand q in [-10, 10]\n"
     "equation sin(q/2 - x) = 0\n";
@@ -212,9 +212,9 @@ TEST(PoseMembership, UndecidedWhenThePrecisionRunsOutNeverOutside) {
 }
 
 TEST(QueryPath, HelixPoseShiftedOntoAFaceHasItsCommands) {
-  // Issue 33: 4.71238898038469 - 2π lies on a face of the subdivision; it was "outside the
-  // workspace" while -1.5707963267948966 (the same pose) had 4 certified commands. At 24
-  // bits the conservative test failed in a window about 5e-7 wide.
+  // 4.71238898038469 - 2π lies on a face of the subdivision: the same pose as
+  // -1.5707963267948966, 4 certified commands. A test sure only of "inside" calls it outside
+  // the workspace (at 24 bits, in a window about 5e-7 wide).
   for (int prec : {53, 24}) {
     LoadedResult r = solve_text(kHelix, 0.3, prec);
     ModelEvaluator ev(r.model);
