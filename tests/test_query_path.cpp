@@ -289,6 +289,30 @@ TEST(QueryPath, QueryOutsideTheWorkspaceSaysSo) {
   EXPECT_TRUE(q.undecided.empty());
 }
 
+TEST(QueryPath, NegativeAnswersOnlyWhereNoBoxHoldsThePose) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  // Farther than 13 from both bases: no box, so no path from or to it.
+  EXPECT_EQ(plan_path(r, ev, {19.5, 19.5}, {10, -6}, -1).outcome, PathOutcome::StartNowhere);
+  EXPECT_EQ(plan_path(r, ev, {10, -6}, {19.5, 19.5}, -1).outcome, PathOutcome::GoalNowhere);
+  // Every corner of a solution box (on two faces) lies in that box, and one ulp outside
+  // the lower corner it does not (boxes are closed, the test exact).
+  int corners = 0;
+  for (size_t i = 0; i < r.index.solutions.size(); i += 97) {
+    const IndexSolutionBox& s = r.index.solutions[i];
+    for (const std::vector<double>& c : {std::vector<double>{s.lo[0], s.lo[1]},
+                                         std::vector<double>{s.hi[0], s.hi[1]}}) {
+      std::vector<size_t> at = solution_boxes_at(r, c).inside;
+      EXPECT_TRUE(std::count(at.begin(), at.end(), i)) << "box " << s.id;
+      EXPECT_NE(query_pose(r, ev, c).outcome, QueryOutcome::OutsideWorkspace);
+      ++corners;
+    }
+    std::vector<double> out = {std::nextafter(s.lo[0], -100.0), s.lo[1]};
+    EXPECT_EQ(pose_in_box(r.model, out, s.lo.data(), s.hi.data()), Membership::Outside);
+  }
+  EXPECT_GT(corners, 100);
+}
+
 TEST(QueryPath, PathAcrossTheLargestCsncIsCertifiedSegmentBySegment) {
   LoadedResult& r = rrrrr();
   ModelEvaluator ev(r.model);
