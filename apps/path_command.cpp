@@ -1,6 +1,7 @@
 #include "path_command.h"
 
 #include <algorithm>
+#include <cmath>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <cstdio>
@@ -24,6 +25,7 @@ const char* path_outcome_name(PathOutcome o) {
     case PathOutcome::DifferentSigns: return "different_signs";
     case PathOutcome::SameSignsNoPath: return "same_signs_no_certified_path";
     case PathOutcome::ProofFailed: return "proof_failed";
+    case PathOutcome::MembershipUnknown: return "membership_unknown";
   }
   return "?";
 }
@@ -152,11 +154,11 @@ bool shortest_boxes(const LoadedResult& r, int32_t k, const std::vector<double>&
 
 }  // namespace
 
-PathResult plan_path(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& from,
-                     const std::vector<double>& to, int csnc) {
-  PathResult p;
-  std::vector<size_t> from_boxes = solution_boxes_at(r, from);
-  std::vector<size_t> to_boxes = solution_boxes_at(r, to);
+namespace {
+
+// Which CSNC joins the poses: Found (proceed) with p.csnc set, or the negative outcome.
+PathOutcome choose_csnc(const LoadedResult& r, const std::vector<size_t>& from_boxes,
+                        const std::vector<size_t>& to_boxes, int csnc, PathResult& p) {
   p.start_csncs = csncs_of(r, from_boxes);
   p.goal_csncs = csncs_of(r, to_boxes);
   std::set_intersection(p.start_csncs.begin(), p.start_csncs.end(), p.goal_csncs.begin(),
@@ -164,30 +166,65 @@ PathResult plan_path(const LoadedResult& r, ModelEvaluator& ev, const std::vecto
   std::vector<int32_t> from_k = p.start_csncs;
   if (csnc >= 0) {
     p.csnc = csnc;
-    bool start_in = std::binary_search(from_k.begin(), from_k.end(), csnc);
-    if (!start_in) {
-      p.outcome = PathOutcome::StartNowhere;
-      return p;
-    }
+    if (!std::binary_search(from_k.begin(), from_k.end(), csnc)) return PathOutcome::StartNowhere;
     from_k = {csnc};
   } else if (!p.common_csncs.empty()) {
     p.csnc = p.common_csncs.front();
   }
-  if (from_k.empty()) {
-    p.outcome = PathOutcome::StartNowhere;
-    return p;
+  if (from_k.empty()) return PathOutcome::StartNowhere;
+  if (p.goal_csncs.empty()) return PathOutcome::GoalNowhere;
+  if (!std::binary_search(p.goal_csncs.begin(), p.goal_csncs.end(), p.csnc))
+    return refuse(r, from_k, p.goal_csncs);
+  return PathOutcome::Found;
+}
+
+// The argument's premise, checked: both ends of each segment lie in the box of its first
+// waypoint. Sets each waypoint's turns (the unwrapped ends of a segment are the points of
+// its box, shifted alike) and the length of the path as printed.
+bool place_segments(const LoadedResult& r, PathResult& p) {
+  const size_t d = r.model.pose.size();
+  p.waypoints.front().turns.assign(d, 0);
+  for (size_t i = 0; i + 1 < p.waypoints.size(); ++i) {
+    Waypoint& a = p.waypoints[i];
+    Waypoint& b = p.waypoints[i + 1];
+    const IndexSolutionBox& s = r.index.solutions[a.solution];
+    std::vector<long> end_turns;
+    if (pose_in_box(r.model, a.pose, s.lo.data(), s.hi.data(), &a.box_turns) != Membership::Inside ||
+        pose_in_box(r.model, b.pose, s.lo.data(), s.hi.data(), &end_turns) != Membership::Inside) {
+      p.failure = "waypoints " + std::to_string(i) + " and " + std::to_string(i + 1) +
+                  " are not both in box " + std::to_string(s.id);
+      return false;
+    }
+    b.turns.assign(d, 0);
+    b.box_turns = end_turns;  // the goal's box is the last segment's
+    double sq = 0;
+    for (size_t j = 0; j < d; ++j) {
+      b.turns[j] = a.turns[j] - a.box_turns[j] + end_turns[j];
+      const double step = b.pose[j] - a.pose[j] + 2 * M_PI * double(b.turns[j] - a.turns[j]);
+      sq += step * step;
+    }
+    p.length += std::sqrt(sq);
   }
-  if (p.goal_csncs.empty()) {
-    p.outcome = PathOutcome::GoalNowhere;
-    return p;
-  }
-  if (!std::binary_search(p.goal_csncs.begin(), p.goal_csncs.end(), p.csnc)) {
-    p.outcome = refuse(r, from_k, p.goal_csncs);
+  return true;
+}
+
+}  // namespace
+
+PathResult plan_path(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& from,
+                     const std::vector<double>& to, int csnc) {
+  PathResult p;
+  const BoxesAtPose at_from = solution_boxes_at(r, from);
+  const BoxesAtPose at_to = solution_boxes_at(r, to);
+  p.outcome = choose_csnc(r, at_from.inside, at_to.inside, csnc, p);
+  if (p.outcome != PathOutcome::Found) {
+    // A negative answer needs every membership of both poses decided.
+    if (!at_from.unknown.empty() || !at_to.unknown.empty())
+      p.outcome = PathOutcome::MembershipUnknown;
     return p;
   }
   std::vector<size_t> boxes;
   std::vector<int32_t> links;
-  if (!shortest_boxes(r, p.csnc, from, to, from_boxes, to_boxes, boxes, links)) {
+  if (!shortest_boxes(r, p.csnc, from, to, at_from.inside, at_to.inside, boxes, links)) {
     // Cannot happen for a CSNC (a connected component of the links); kept as a refusal.
     p.outcome = PathOutcome::ProofFailed;
     p.failure = "no chain of links joins the two poses in CSNC " + std::to_string(p.csnc);
@@ -200,7 +237,7 @@ PathResult plan_path(const LoadedResult& r, ModelEvaluator& ev, const std::vecto
   auto add = [&](WaypointKind kind, const std::vector<double>& pose, size_t box) {
     const IndexSolutionBox& s = idx.solutions[box];
     Waypoint w{kind, pose, box, s.id,
-               certified_command(ev, s.lo.data(), s.hi.data(), pose, idx.tau, ws)};
+               certified_command(ev, s.lo.data(), s.hi.data(), pose, idx.tau, ws), {}, {}};
     p.waypoints.push_back(std::move(w));
     return p.waypoints.back().command.status == PointCommandStatus::Certified;
   };
@@ -220,17 +257,7 @@ PathResult plan_path(const LoadedResult& r, ModelEvaluator& ev, const std::vecto
     ok = add(WaypointKind::Witness, proof.witness, boxes[i + 1]);
   }
   if (ok) ok = add(WaypointKind::Goal, to, boxes.back());
-  if (ok && p.failure.empty() && !p.waypoints.empty()) {
-    // The argument's premise, checked: each segment lies in the box of its first waypoint.
-    for (size_t i = 0; ok && i + 1 < p.waypoints.size(); ++i) {
-      const IndexSolutionBox& s = idx.solutions[p.waypoints[i].solution];
-      ok = pose_in_box(r.model, p.waypoints[i].pose, s.lo.data(), s.hi.data()) &&
-           pose_in_box(r.model, p.waypoints[i + 1].pose, s.lo.data(), s.hi.data());
-      if (!ok) p.failure = "waypoints " + std::to_string(i) + " and " + std::to_string(i + 1) +
-                           " are not both in box " + std::to_string(s.id);
-      p.length += pose_distance(p.waypoints[i].pose, p.waypoints[i + 1].pose, r.pose_periodic);
-    }
-  }
+  if (ok) ok = place_segments(r, p);
   if (!ok) {
     if (p.failure.empty())
       p.failure = "the command of waypoint " + std::to_string(p.waypoints.size() - 1) +
@@ -243,6 +270,17 @@ PathResult plan_path(const LoadedResult& r, ModelEvaluator& ev, const std::vecto
 }
 
 namespace {
+
+// The printed pose: pose + 2π·turns, rounded to double.
+std::vector<double> unwrapped(const Waypoint& w) {
+  std::vector<double> u = w.pose;
+  for (size_t j = 0; j < u.size() && j < w.turns.size(); ++j) u[j] += 2 * M_PI * double(w.turns[j]);
+  return u;
+}
+
+bool any_turn(const Waypoint& w) {
+  return std::any_of(w.turns.begin(), w.turns.end(), [](long k) { return k != 0; });
+}
 
 const char* kind_name(WaypointKind k) {
   return k == WaypointKind::Start ? "start" : k == WaypointKind::Goal ? "goal" : "witness";
@@ -270,14 +308,20 @@ void print_text(const LoadedResult& r, const PathOptions& o, const std::vector<d
       std::printf("certified singularity-free path in CSNC %d: %zu waypoints, length %.6g\n",
                   p.csnc, p.waypoints.size(), p.length);
       for (const Waypoint& w : p.waypoints) {
-        std::printf("  %-7s %s  box %u:", kind_name(w.kind), format_pose(w.pose).c_str(), w.box);
+        std::printf("  %-7s %s  box %u:", kind_name(w.kind), format_pose(unwrapped(w)).c_str(),
+                    w.box);
         for (int j = 0; j < m.n(); ++j)
           std::printf(" %s in [%.17g, %.17g]", m.vars[m.command[j]].name.c_str(),
                       w.command.lo[j], w.command.hi[j]);
         std::printf("  width %.3g\n", w.command.width());
       }
-      std::printf("each segment is straight in the pose space, inside the box of its first "
-                  "waypoint, where the command is that box's continuous nonsingular κ\n");
+      if (any_turn(p.waypoints.back()))
+        std::printf("the goal is printed unwrapped: the pose given plus a whole number of turns "
+                    "(2*pi) on the periodic coordinates, the same pose of the robot\n");
+      std::printf("each segment is straight in the pose space between its printed ends "
+                  "(periodic coordinates unwrapped, continuing past +-pi), inside the box of "
+                  "its first waypoint shifted by whole turns, where the command is that box's "
+                  "continuous nonsingular κ\n");
       if (p.common_csncs.size() > 1 && o.csnc < 0)
         std::printf("other CSNCs holding both poses (other working modes): %s (use --csnc)\n",
                     csnc_list(r, {p.common_csncs.begin() + 1, p.common_csncs.end()}).c_str());
@@ -305,6 +349,11 @@ void print_text(const LoadedResult& r, const PathOptions& o, const std::vector<d
     case PathOutcome::ProofFailed:
       std::printf("no certified path: %s\n", p.failure.c_str());
       break;
+    case PathOutcome::MembershipUnknown:
+      std::printf("no certified path, and no claim: whether a pose lies in some solution box "
+                  "could not be decided (a periodic coordinate too close to a face); %s\n",
+                  where.c_str());
+      break;
   }
 }
 
@@ -321,6 +370,7 @@ void print_json(const std::vector<double>& from, const std::vector<double>& to,
   for (const Waypoint& w : p.waypoints)
     j["waypoints"].push_back({{"kind", kind_name(w.kind)},
                               {"pose", w.pose},
+                              {"turns", w.turns},
                               {"command_lo", w.command.lo},
                               {"command_hi", w.command.hi},
                               {"box", w.box}});

@@ -12,6 +12,9 @@
 // solves f(x̂, q*) = 0, so uniqueness in each box gives κ_S(x̂) = q* = κ_S'(x̂): the pieces
 // join into one continuous motion that crosses no singularity. Each waypoint's command
 // enclosure is proved at that point (point_command.h) in the box of the segment after it.
+// Waypoints are printed unwrapped (pose + 2π·turns on periodic coordinates): consecutive
+// printed poses are the two ends of the straight segment, as they lie in its box (shifted
+// by a whole number of turns), so a segment across the ±π seam is printed as it runs.
 #pragma once
 
 #include <cstdint>
@@ -39,6 +42,8 @@ struct Waypoint {
   size_t solution = 0;      // the box of the segment that follows (the goal: its own box)
   uint32_t box = 0;         // its id
   PointCommand command;     // κ of that box at the pose
+  std::vector<long> turns;      // pose order: printed as pose + 2π·turns (unwrapped)
+  std::vector<long> box_turns;  // pose + 2π·box_turns lies in the box
 };
 
 enum class PathOutcome {
@@ -50,6 +55,8 @@ enum class PathOutcome {
   SameSignsNoPath,   // no common CSNC, but some pair has equal signs: maybe one aspect,
                      // no certified path at this ε
   ProofFailed,       // a waypoint's command or a link could not be proved again
+  MembershipUnknown, // no path found, and whether a pose lies in some box was not decided
+                     // (pose.h): no claim
 };
 
 struct PathResult {

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -29,12 +30,14 @@ fig, ax = plt.subplots(figsize=(7, 7))
 polys = [[(a, c), (b, c), (b, e), (a, e)] for a, b, c, e in d["boxes"]]
 ax.add_collection(PolyCollection(polys, facecolors="#9ecae1", edgecolors="#4292c6",
                                  linewidths=0.2, label="CSNC %s boxes" % d["csnc"]))
-if d["path"]:
-    xs = [p[0] for p in d["path"]]
-    ys = [p[1] for p in d["path"]]
-    ax.plot(xs, ys, "-o", color="#d62728", markersize=2.5, linewidth=1.2, label="path")
-    ax.plot(xs[:1], ys[:1], "s", color="#2ca02c", markersize=7, label="start")
-    ax.plot(xs[-1:], ys[-1:], "*", color="#000000", markersize=10, label="goal")
+for i, (x0, y0, x1, y1) in enumerate(d["segments"]):
+    ax.plot([x0, x1], [y0, y1], "-o", color="#d62728", markersize=2.5, linewidth=1.2,
+            label="path" if i == 0 else None)
+if d["segments"]:
+    ax.plot(d["segments"][0][:1], d["segments"][0][1:2], "s", color="#2ca02c", markersize=7,
+            label="start")
+    ax.plot(d["segments"][-1][2:3], d["segments"][-1][3:], "*", color="#000000",
+            markersize=10, label="goal")
 ax.autoscale_view()
 ax.set_aspect("equal", adjustable="datalim")
 ax.set_xlabel(d["names"][0])
@@ -61,8 +64,17 @@ void write_path_plot(const LoadedResult& r, const PathResult& p, const std::stri
   d["boxes"] = nlohmann::json::array();
   for (const IndexSolutionBox& s : r.index.solutions)
     if (s.csnc == p.csnc) d["boxes"].push_back({s.lo[vx], s.hi[vx], s.lo[vy], s.hi[vy]});
-  d["path"] = nlohmann::json::array();
-  for (const Waypoint& w : p.waypoints) d["path"].push_back({w.pose[0], w.pose[1]});
+  // Each segment drawn in its own box (a segment across the seam is drawn at the side of
+  // the box it runs in), so every drawn segment is one the path takes.
+  d["segments"] = nlohmann::json::array();
+  for (size_t i = 0; i + 1 < p.waypoints.size(); ++i) {
+    const Waypoint& a = p.waypoints[i];
+    const Waypoint& b = p.waypoints[i + 1];
+    auto in_box = [&](const Waypoint& w, int j) {
+      return w.pose[j] + 2 * M_PI * double(w.turns[j] - a.turns[j] + a.box_turns[j]);
+    };
+    d["segments"].push_back({in_box(a, 0), in_box(a, 1), in_box(b, 0), in_box(b, 1)});
+  }
   const std::string data = png + ".plot-data." + std::to_string(getpid()) + ".json";
   write_file_atomically(data, d.dump());
   const char* py = "/usr/bin/python3";

@@ -16,15 +16,18 @@ const char* query_outcome_name(QueryOutcome o) {
     case QueryOutcome::NotProved: return "not_proved";
     case QueryOutcome::UndecidedRegion: return "undecided_region";
     case QueryOutcome::OutsideWorkspace: return "outside_workspace";
+    case QueryOutcome::MembershipUnknown: return "membership_unknown";
   }
   return "?";
 }
 
-std::vector<size_t> solution_boxes_at(const LoadedResult& r, const std::vector<double>& pose) {
-  std::vector<size_t> found;
+BoxesAtPose solution_boxes_at(const LoadedResult& r, const std::vector<double>& pose) {
+  BoxesAtPose found;
   for (size_t i = 0; i < r.index.solutions.size(); ++i) {
     const IndexSolutionBox& s = r.index.solutions[i];
-    if (pose_in_box(r.model, pose, s.lo.data(), s.hi.data())) found.push_back(i);
+    Membership in = pose_in_box(r.model, pose, s.lo.data(), s.hi.data());
+    if (in == Membership::Inside) found.inside.push_back(i);
+    if (in == Membership::Undecided) found.unknown.push_back(i);
   }
   return found;
 }
@@ -32,7 +35,9 @@ std::vector<size_t> solution_boxes_at(const LoadedResult& r, const std::vector<d
 QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& pose) {
   QueryResult q;
   HsWorkspace ws;
-  for (size_t i : solution_boxes_at(r, pose)) {
+  const BoxesAtPose at = solution_boxes_at(r, pose);
+  for (size_t i : at.unknown) q.unknown.push_back(r.index.solutions[i].id);
+  for (size_t i : at.inside) {
     const IndexSolutionBox& s = r.index.solutions[i];
     PointCommand c = certified_command(ev, s.lo.data(), s.hi.data(), pose, r.index.tau, ws);
     if (c.status == PointCommandStatus::Certified)
@@ -50,15 +55,17 @@ QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vec
     q.outcome = QueryOutcome::NotProved;
     return q;
   }
-  std::vector<bool> periodic = r.pose_periodic;
   for (const IndexUndecidedBox& u : r.index.undecided) {
-    bool in = true;
-    for (size_t j = 0; j < pose.size() && in; ++j)
-      in = coordinate_in(pose[j], u.lo[j], u.hi[j], periodic[j]);
-    if (in) q.undecided.push_back(u.id);
-    if (in) q.unexplored += u.kind == uint8_t(UndecidedKind::Unexplored);
+    Membership in = pose_in_pose_box(r.pose_periodic, pose, u.lo.data(), u.hi.data());
+    if (in == Membership::Undecided) q.unknown.push_back(u.id);
+    if (in != Membership::Inside) continue;
+    q.undecided.push_back(u.id);
+    q.unexplored += u.kind == uint8_t(UndecidedKind::Unexplored);
   }
-  q.outcome = q.undecided.empty() ? QueryOutcome::OutsideWorkspace : QueryOutcome::UndecidedRegion;
+  // "Only in undecided boxes" and "in no box" need every membership decided.
+  q.outcome = !q.unknown.empty()      ? QueryOutcome::MembershipUnknown
+              : q.undecided.empty() ? QueryOutcome::OutsideWorkspace
+                                    : QueryOutcome::UndecidedRegion;
   return q;
 }
 
@@ -117,6 +124,11 @@ void print_text(const LoadedResult& r, const std::vector<double>& pose, const Qu
       std::printf("no command: the pose lies in no box of the result, so no feasible command "
                   "in the declared domain reaches it (outside the workspace)\n");
       break;
+    case QueryOutcome::MembershipUnknown:
+      std::printf("no claim: no certified command, and whether the pose lies in %zu box(es) "
+                  "(first: %u) could not be decided (a periodic coordinate too close to a "
+                  "face)\n", q.unknown.size(), q.unknown.front());
+      break;
   }
   for (uint32_t id : q.unproved)
     if (q.outcome == QueryOutcome::Answered)
@@ -137,6 +149,7 @@ void print_json(const std::vector<double>& pose, const QueryResult& q, const Loa
                             {"signs", r.index.solutions[a.solution].signs}});
   j["unproved_boxes"] = q.unproved;
   j["undecided_boxes"] = q.undecided;
+  j["membership_unknown_boxes"] = q.unknown;
   std::cout << j.dump() << '\n';
 }
 

@@ -1,7 +1,8 @@
 // `aspects query RESULT_DIR --pose X`: the commands of a pose, one per solution box that
 // contains it, grouped by CSNC (paper 4.1: κ_S in each box S), each enclosure proved at
 // the pose (point_command.h). A pose in no solution box is classified with the coverage
-// of the result (S ∪ U holds every feasible solution of the domain).
+// of the result (S ∪ U holds every feasible solution of the domain). Membership in a box
+// is decided exactly (pose.h), so "in no box" is a proof, not a failed test.
 #pragma once
 
 #include <cstdint>
@@ -32,6 +33,8 @@ enum class QueryOutcome {
   UndecidedRegion,   // in undecided boxes only: near a singularity, a constraint boundary,
                      // or not resolved at this ε
   OutsideWorkspace,  // in no box: certainly no feasible command in the declared domain
+  MembershipUnknown, // no certified command, and whether the pose lies in some box was not
+                     // decided (pose.h): no claim
 };
 
 struct QueryResult {
@@ -40,12 +43,18 @@ struct QueryResult {
   std::vector<uint32_t> unproved;    // solution boxes containing the pose, no proof
   std::vector<uint32_t> undecided;   // undecided boxes containing the pose
   size_t unexplored = 0;             // of which cells a stopped run never searched
+  std::vector<uint32_t> unknown;     // boxes (solution or undecided) of undecided membership
 };
 
 const char* query_outcome_name(QueryOutcome o);
 
-// Solution boxes of `r` whose pose part contains `pose` (indices into solutions).
-std::vector<size_t> solution_boxes_at(const LoadedResult& r, const std::vector<double>& pose);
+struct BoxesAtPose {
+  std::vector<size_t> inside;   // solution boxes whose pose part contains the pose
+  std::vector<size_t> unknown;  // those whose membership was not decided
+};
+
+// Solution boxes of `r` and the pose (indices into solutions).
+BoxesAtPose solution_boxes_at(const LoadedResult& r, const std::vector<double>& pose);
 
 QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& pose);
 

@@ -1,7 +1,8 @@
 #!/bin/sh
 # `aspects query` and `aspects path` on damaged result directories (exit 2, a message
 # naming the problem), `aspects path --plot` writing a PNG, and a periodic pose: a query
-# modulo 2π and a path across the ±π seam through a certified link. $2: a result
+# modulo 2π and a path across the ±π seam through a certified link, printed unwrapped;
+# poses shifted by whole turns onto box faces, answered as the unshifted ones. $2: a result
 # directory written by `aspects solve --out` for RRRRR (the query_fixture test); $3: the
 # model tests/models/seam_pose.robot.
 set -eu
@@ -55,4 +56,51 @@ expect 0 "certified singularity-free path in CSNC 0: 3 waypoints, length 0\\.483
 grep -E -q "^  witness \\(-?3\\.141592654\\)  box [0-9]+: q in \\[0\\.99999" "$tmp/out" ||
   { cat "$tmp/out" >&2; fail "no witness at the seam"; }
 expect 1 "refused: .*different determinant signs" "$aspects" path "$tmp/seam" --from 2.5 --to=-2.9
+
+# The seam path as printed: unwrapped, the goal is -2.9 + 2π, every printed pose is above
+# the one before, and the length is the distance between the printed ends.
+"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 > "$tmp/out"
+grep -q "^  goal    (3\.383185307)  box" "$tmp/out" || { cat "$tmp/out" >&2; fail "goal not unwrapped"; }
+grep -q "^the goal is printed unwrapped" "$tmp/out" || fail "no note that the goal is unwrapped"
+awk -F'[()]' '/^  (start|witness|goal)/ { if (n++ && $2 + 0 <= last) bad = 1; last = $2 }
+  END { exit bad || n != 3 }' "$tmp/out" || { cat "$tmp/out" >&2; fail "printed poses not increasing"; }
+"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 --json | grep -q '"turns":\[1\]' ||
+  fail "the goal's turns are not [1] in --json"
+
+# 4.71238898038469 is -π/2 + 2π to an ulp, on a face of the helix's subdivision after the
+# shift; at 24 bits a test sure only of "inside" misses a window about 5e-7 wide.
+cat > "$tmp/helix.robot" <<'M'
+robot HELIX
+pose    x in [-pi, pi] periodic
+command q in [-10, 10]
+equation sin(q/2 - x) = 0
+M
+for prec in 53 24; do
+  "$aspects" solve "$tmp/helix.robot" --eps 0.3 --threads 1 --all-links --no-cert --quiet \
+    --prec $prec --out "$tmp/helix$prec"
+  for pose in 4.71238898038469 -1.5707963267948966 4.7123891 -4.712389; do
+    expect 0 "^4 certified command\(s\)" "$aspects" query "$tmp/helix$prec" --pose=$pose
+  done
+  # ±π lies in the boxes at both ends of the root cell (which spans 2π and a few ulps):
+  # the same count for either sign. 3π rounded is 3.7e-16 below 3π: one turn down it is
+  # inside the end at π only, at 53 bits (at 24 bits the root cell is 1e-7 wider).
+  counts=$(for pose in 3.141592653589793 -3.141592653589793; do
+    "$aspects" query "$tmp/helix$prec" --pose=$pose | sed -n 's/^\([0-9]*\) certified.*/\1/p'
+  done | sort -u)
+  [ "$(echo "$counts" | wc -l)" -eq 1 ] && [ "$counts" -ge 4 ] ||
+    fail "at +-pi ($prec bits): certified command counts '$counts'"
+  want=4
+  [ $prec = 53 ] || want='[0-9]+'
+  expect 0 "^$want certified command\(s\)" "$aspects" query "$tmp/helix$prec" --pose=9.42477796076938
+  expect 0 "^certified singularity-free path in CSNC 0" \
+    "$aspects" path "$tmp/helix$prec" --from 4.71238898038469 --to 0.5
+done
+# 3-RPR at eps 4: x3 = -M_PI lies in box 19817 as x3 = M_PI does (-M_PI + 2π is within
+# the root cell's rounding of π).
+rpr=$(dirname "$0")/../robots/3rpr.robot
+"$aspects" solve "$rpr" --eps 4 --threads 1 --no-cert --quiet --out "$tmp/rpr4"
+for x3 in -3.141592653589793 3.141592653589793 9.42477796076938; do
+  expect 0 "^  box 19817: q1 in" \
+    "$aspects" query "$tmp/rpr4" --pose 27.410181655089485,10.585191937597198,$x3
+done
 echo ok

@@ -3,7 +3,10 @@
 // root of f(x, ·) = 0 computed independently here by Newton in MPFR at 256 bits on the
 // RRRRR equations written out by hand; a path's consecutive waypoints share a box; a path
 // across CSNCs of different determinant signs is refused; the index round-trips exactly
-// and rejects truncation and other versions.
+// and rejects truncation and other versions. Membership of a pose in a box (pose.h) is
+// decided exactly: checked against MPFR at 256 bits at box faces, at ±π and shifted by
+// whole turns, so that no negative answer ("outside", "in no solution box") is false; a
+// path across the ±π seam is printed unwrapped.
 //
 // The RRRRR result comes from the `query_fixture` test (aspects solve --out), or is solved
 // here when that directory has no index.
@@ -18,6 +21,7 @@
 #include "generalized_aspects.h"
 #include "loaded_result.h"
 #include "path_command.h"
+#include "pose.h"
 #include "query_command.h"
 #include "result_index.h"
 #include "test_util.h"
@@ -69,6 +73,39 @@ bool mpfr_root(const std::vector<double>& x, const std::vector<double>& start, s
   return false;
 }
 
+// A model and its result solved here, loaded as `aspects query` loads a result directory.
+LoadedResult solve_text(const std::string& text, double eps, int prec) {
+  set_working_precision(prec);
+  Model m = parse_model(text, "(test)");
+  AspectsConfig cfg;
+  cfg.eps = eps;
+  cfg.all_links = true;
+  cfg.keep_link_proofs = false;
+  AspectsResult res = compute_aspects(m, cfg);
+  return load_result_from(build_result_index(m, res, prec, cfg.tau, cfg.eps, "(test)"), "(test)");
+}
+
+// A helix: q = 2x + 4πm solves it, so every pose has commands.
+const char* kHelix =
+    "robot HELIX\npose    x in [-pi, pi] periodic\ncommand q in [-10, 10]\n"
+    "equation sin(q/2 - x) = 0\n";
+
+// Reference: some k in [-3, 3] has lo <= p + 2πk <= hi, at 256 bits (asserted decisive:
+// every comparison clears 2^-200).
+bool reference_inside(double p, double lo, double hi, long& turns) {
+  for (long k = -3; k <= 3; ++k) {
+    R t = R(p) + R(2 * int(k)) * R::pi();
+    R a = t - R(lo), b = R(hi) - t;
+    EXPECT_TRUE(k == 0 || abs(a) > R("1e-60")) << p << " " << k;
+    EXPECT_TRUE(k == 0 || abs(b) > R("1e-60")) << p << " " << k;
+    if (a >= R(0) && b >= R(0)) {
+      turns = k;
+      return true;
+    }
+  }
+  return false;
+}
+
 // The exact root lies in [lo, hi] (the double endpoints are exact reals).
 bool encloses(double lo, double hi, const R& v) { return R(lo) <= v && v <= R(hi); }
 
@@ -107,6 +144,142 @@ TEST(QueryPath, QueryEnclosesTheMpfrRootInEveryBox) {
   }
 }
 
+TEST(PoseMembership, FacesAndWholeTurnsAreDecidedAsMpfrDecides) {
+  // Poses on and within a few ulps of a face b, shifted by ±2π and ±4π (rounded to
+  // doubles), against the two boxes [b - 0.3, b] and [b, b + 0.3]; the faces include ±π
+  // (the seam of the root cell) and the double nearest -π/2 (a bisection point). The
+  // conservative test (the 53-bit enclosure of p + 2πk inside the box) put 5 of these
+  // poses in neither box.
+  const double faces[] = {-M_PI, M_PI, -1.5707963267948966, 0.5, std::nextafter(M_PI, 4.0)};
+  int inside = 0, decided = 0;
+  for (double b : faces)
+    for (long k : {-2L, -1L, 1L, 2L})
+      for (int ulps = -3; ulps <= 3; ++ulps) {
+        double p = (R(b) - R(2 * int(k)) * R::pi()).d();
+        for (int u = 0; u < std::abs(ulps); ++u) p = std::nextafter(p, ulps > 0 ? 10.0 : -10.0);
+        bool in_some = false;
+        for (auto [lo, hi] : {std::pair{b - 0.3, b}, std::pair{b, b + 0.3}}) {
+          long turns = 99, want = 0;
+          Membership m = coordinate_membership(p, lo, hi, true, turns);
+          bool in = reference_inside(p, lo, hi, want);
+          ASSERT_NE(m, Membership::Undecided) << p;
+          EXPECT_EQ(m == Membership::Inside, in) << "p " << p << " box " << lo << " " << hi;
+          if (in) {
+            EXPECT_EQ(turns, want);
+          }
+          in_some = in_some || m == Membership::Inside;
+          inside += m == Membership::Inside;
+          ++decided;
+        }
+        EXPECT_TRUE(in_some) << p << ": the two boxes meet at b, one holds p modulo 2π";
+      }
+  EXPECT_EQ(decided, 5 * 4 * 7 * 2);
+  EXPECT_GE(inside, 5 * 4 * 7);
+}
+
+TEST(PoseMembership, UnshiftedFacesAreExactAndPiIsOnBothSidesOfTheSeam) {
+  const double lo = -0.25, hi = 0.75;
+  long t = 7;
+  EXPECT_EQ(coordinate_membership(lo, lo, hi, false, t), Membership::Inside);
+  EXPECT_EQ(t, 0);
+  EXPECT_EQ(coordinate_membership(hi, lo, hi, false, t), Membership::Inside);
+  EXPECT_EQ(coordinate_membership(std::nextafter(lo, -1.0), lo, hi, false, t), Membership::Outside);
+  EXPECT_EQ(coordinate_membership(std::nextafter(hi, 1.0), lo, hi, true, t), Membership::Outside);
+  // The root cell of [-pi, pi] rounded outward holds both M_PI (< π) and M_PI - 2π
+  // (> -π - 2^-51), and -M_PI and -M_PI + 2π.
+  const double root_lo = std::nextafter(-M_PI, -4.0), root_hi = std::nextafter(M_PI, 4.0);
+  EXPECT_EQ(coordinate_membership(M_PI, root_lo, -3.0, true, t), Membership::Inside);
+  EXPECT_EQ(t, -1);
+  EXPECT_EQ(coordinate_membership(-M_PI, 3.0, root_hi, true, t), Membership::Inside);
+  EXPECT_EQ(t, 1);
+  // -π - 2^-50 is outside; its shift by 2π is π - 2^-50 + ..., inside [3, root_hi].
+  EXPECT_EQ(coordinate_membership(-M_PI - 0x1p-50, root_lo, -3.0, true, t), Membership::Outside);
+  EXPECT_EQ(coordinate_membership(-M_PI - 0x1p-50, 3.0, root_hi, true, t), Membership::Inside);
+}
+
+TEST(PoseMembership, UndecidedWhenThePrecisionRunsOutNeverOutside) {
+  // p + 2π within 2^-50 of the face 0.5: below 128 bits of π no MPFR step runs, and only
+  // the double test (which cannot decide so close) is left.
+  const double p = (R(0.5) - R(2) * R::pi()).d();
+  long t = 0;
+  EXPECT_EQ(coordinate_membership(p, 0.5, 0.8, true, t, 64), Membership::Undecided);
+  EXPECT_EQ(coordinate_membership(p, 0.2, 0.5, true, t, 64), Membership::Undecided);
+  EXPECT_EQ(shifted_sign(p, 1, 0.5, 64), 0);
+  const int exact = shifted_sign(p, 1, 0.5);
+  EXPECT_EQ(exact, (R(p) + R(2) * R::pi() > R(0.5)) ? 1 : -1);
+  EXPECT_EQ(coordinate_membership(p, 0.5, 0.8, true, t) == Membership::Inside, exact > 0);
+  EXPECT_EQ(coordinate_membership(p, 0.2, 0.5, true, t) == Membership::Inside, exact < 0);
+}
+
+TEST(QueryPath, HelixPoseShiftedOntoAFaceHasItsCommands) {
+  // 4.71238898038469 - 2π lies on a face of the subdivision: the same pose as
+  // -1.5707963267948966, 4 certified commands. A test sure only of "inside" calls it outside
+  // the workspace (at 24 bits, in a window about 5e-7 wide).
+  for (int prec : {53, 24}) {
+    LoadedResult r = solve_text(kHelix, 0.3, prec);
+    ModelEvaluator ev(r.model);
+    QueryResult shifted = query_pose(r, ev, {4.71238898038469});
+    QueryResult plain = query_pose(r, ev, {-1.5707963267948966});
+    EXPECT_EQ(plain.outcome, QueryOutcome::Answered) << prec;
+    EXPECT_EQ(shifted.outcome, plain.outcome) << prec;
+    EXPECT_EQ(shifted.answers.size(), plain.answers.size()) << prec;
+    if (prec == 53) {
+      EXPECT_EQ(plain.answers.size(), 4u);
+    }
+    EXPECT_TRUE(shifted.unknown.empty());
+    PathResult p = plan_path(r, ev, {4.71238898038469}, {0.5}, -1);
+    EXPECT_EQ(p.outcome, PathOutcome::Found) << prec << " " << p.failure;
+    // At ±π, near -π/2 and elsewhere, shifted by whole turns (then rounded): the solution
+    // boxes found are those that hold the pose at 256 bits.
+    for (double x : {M_PI, -M_PI, -1.5707963267948966, 2.5, -0.75})
+      for (double s : {0.0, 2 * M_PI, -2 * M_PI, 4 * M_PI}) {
+        std::vector<size_t> want;
+        for (size_t i = 0; i < r.index.solutions.size(); ++i) {
+          long turns = 0;
+          const IndexSolutionBox& b = r.index.solutions[i];
+          if (reference_inside(x + s, b.lo[0], b.hi[0], turns)) want.push_back(i);
+        }
+        EXPECT_EQ(solution_boxes_at(r, {x + s}).inside, want) << x << " + " << s;
+        EXPECT_GE(want.size(), 3u) << x << " + " << s;
+        QueryResult q = query_pose(r, ev, {x + s});
+        EXPECT_EQ(q.outcome, QueryOutcome::Answered);
+      }
+  }
+  set_working_precision(53);
+}
+
+TEST(QueryPath, PathAcrossTheSeamIsPrintedUnwrapped) {
+  // tests/models/seam_pose.robot: from 2.9 to -2.9 the short way crosses ±π. Printed
+  // unwrapped, the goal is -2.9 + 2π and the path is monotone: its length is the distance
+  // between its printed ends, and each segment's printed ends lie in its box after one
+  // common whole-turn shift.
+  LoadedResult r = solve_text(
+      "robot Seam\npose    t in [-pi, pi] periodic\ncommand q in [0, 4]\n"
+      "equation q - 2 - cos(t) + sin(t)/2 = 0\n", 0.1, 53);
+  ModelEvaluator ev(r.model);
+  PathResult p = plan_path(r, ev, {2.9}, {-2.9}, -1);
+  ASSERT_EQ(p.outcome, PathOutcome::Found) << p.failure;
+  ASSERT_EQ(p.waypoints.size(), 3u);
+  EXPECT_EQ(p.waypoints.front().turns, std::vector<long>{0});
+  EXPECT_EQ(p.waypoints.back().turns, std::vector<long>{1});
+  EXPECT_NEAR(p.length, 2 * M_PI - 5.8, 1e-12);
+  double previous = -10;
+  for (size_t i = 0; i < p.waypoints.size(); ++i) {
+    const Waypoint& w = p.waypoints[i];
+    const R printed = R(w.pose[0]) + R(2 * int(w.turns[0])) * R::pi();
+    EXPECT_GT(printed.d(), previous) << "waypoint " << i;
+    previous = printed.d();
+    if (i + 1 == p.waypoints.size()) break;
+    const IndexSolutionBox& s = r.index.solutions[w.solution];
+    const long shift = w.turns[0] - w.box_turns[0];
+    const R next = R(p.waypoints[i + 1].pose[0]) +
+                   R(2 * int(p.waypoints[i + 1].turns[0] - shift)) * R::pi();
+    const R here = printed - R(2 * int(shift)) * R::pi();
+    EXPECT_TRUE(R(s.lo[0]) <= here && here <= R(s.hi[0])) << "segment " << i;
+    EXPECT_TRUE(R(s.lo[0]) <= next && next <= R(s.hi[0])) << "segment " << i;
+  }
+}
+
 TEST(QueryPath, QueryOutsideTheWorkspaceSaysSo) {
   LoadedResult& r = rrrrr();
   ModelEvaluator ev(r.model);
@@ -114,6 +287,30 @@ TEST(QueryPath, QueryOutsideTheWorkspaceSaysSo) {
   EXPECT_EQ(q.outcome, QueryOutcome::OutsideWorkspace);
   EXPECT_TRUE(q.answers.empty());
   EXPECT_TRUE(q.undecided.empty());
+}
+
+TEST(QueryPath, NegativeAnswersOnlyWhereNoBoxHoldsThePose) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  // Farther than 13 from both bases: no box, so no path from or to it.
+  EXPECT_EQ(plan_path(r, ev, {19.5, 19.5}, {10, -6}, -1).outcome, PathOutcome::StartNowhere);
+  EXPECT_EQ(plan_path(r, ev, {10, -6}, {19.5, 19.5}, -1).outcome, PathOutcome::GoalNowhere);
+  // Every corner of a solution box (on two faces) lies in that box, and one ulp outside
+  // the lower corner it does not (boxes are closed, the test exact).
+  int corners = 0;
+  for (size_t i = 0; i < r.index.solutions.size(); i += 97) {
+    const IndexSolutionBox& s = r.index.solutions[i];
+    for (const std::vector<double>& c : {std::vector<double>{s.lo[0], s.lo[1]},
+                                         std::vector<double>{s.hi[0], s.hi[1]}}) {
+      std::vector<size_t> at = solution_boxes_at(r, c).inside;
+      EXPECT_TRUE(std::count(at.begin(), at.end(), i)) << "box " << s.id;
+      EXPECT_NE(query_pose(r, ev, c).outcome, QueryOutcome::OutsideWorkspace);
+      ++corners;
+    }
+    std::vector<double> out = {std::nextafter(s.lo[0], -100.0), s.lo[1]};
+    EXPECT_EQ(pose_in_box(r.model, out, s.lo.data(), s.hi.data()), Membership::Outside);
+  }
+  EXPECT_GT(corners, 100);
 }
 
 TEST(QueryPath, PathAcrossTheLargestCsncIsCertifiedSegmentBySegment) {
@@ -185,7 +382,7 @@ TEST(QueryPath, PathAcrossCsncsOfDifferentSignsIsRefused) {
   std::vector<double> goal;
   for (const IndexSolutionBox& s : r.index.solutions) {
     if (s.csnc == 0 || uint32_t(s.csnc) >= r.index.filtered || !differs(s)) continue;
-    std::vector<size_t> at = solution_boxes_at(r, centre(s));
+    std::vector<size_t> at = solution_boxes_at(r, centre(s)).inside;
     bool all_differ = std::all_of(at.begin(), at.end(), [&](size_t i) {
       return differs(r.index.solutions[i]);
     });

@@ -101,6 +101,8 @@ struct Verdict {
   long record = 0;  // the record a rejection concerns
   long solutions = 0, undecided = 0, links = 0, csncs = 0;
   long unexplored = 0;  // N records: a stopped run's cells never searched (complete=no)
+  long wide_undecided = 0;  // U records wider than eps, which the search rule never ends
+  double eps = 0;           // the search's eps (eps record): complete is relative to it
   long cuspidal = 0, cuspidal_csncs = 0;  // verified W records; CSNCs with one
   long assembly = 0;                      // verified V records
   long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user

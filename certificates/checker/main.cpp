@@ -6,6 +6,7 @@
 // their claimed signs (each proved by a queued proof), the union-find of the links and the
 // CSNC of each box.
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -199,7 +200,8 @@ struct Checker {
   // tau and eps (range only: informational) and the root cell.
   void read_domain() {
     if (!(rd.expect({"tau"}, 1).real() >= 1)) malformed(rec(), "tau must be >= 1");
-    if (!(rd.expect({"eps"}, 1).real() > 0)) malformed(rec(), "eps must be > 0");
+    out.eps = rd.expect({"eps"}, 1).real();
+    if (!(out.eps > 0)) malformed(rec(), "eps must be > 0");
     root = rd.expect({"domain"}, 2 * size_t(nv)).intervals(nv);
     for (int v = 0; v < nv; ++v) {
       const std::string& name = m.vars[v].name;
@@ -345,6 +347,18 @@ struct Checker {
       return signs_proved(pr, signs, false);
     });
     ++(unexplored ? out.unexplored : out.undecided);
+    out.wide_undecided += !unexplored && !at_most_eps(cell);
+  }
+
+  // The search ends a branch undecided only when every width is at most eps (FORMAT.md,
+  // "U"): hi − lo ≤ eps exactly, from its rounded value s and the exact error e (TwoSum).
+  bool at_most_eps(const Box& cell) const {
+    for (int v = 0; v < nv; ++v) {
+      const double a = cell[2 * v + 1], b = -cell[2 * v];
+      const double s = a + b, bb = s - a, e = (a - (s - bb)) + (b - bb);
+      if (!(s < out.eps || (s == out.eps && e <= 0))) return false;
+    }
+    return true;
   }
 
   void solution_leaf(const Box& cell) {
@@ -805,13 +819,23 @@ struct Count {
 };
 std::vector<Count> counts(const Verdict& v) {
   return {{"solutions", v.solutions, true},   {"undecided", v.undecided, true},
-          {"unexplored", v.unexplored, true}, {"links", v.links, true},
+          {"unexplored", v.unexplored, true}, {"wide_undecided", v.wide_undecided, true},
+          {"links", v.links, true},
           {"csncs", v.csncs, true},           {"cuspidal", v.cuspidal, true},
           {"cuspidal_csncs", v.cuspidal_csncs, true},
           {"assembly", v.assembly, true},     {"lower_bound", v.claimed, true},
           {"recomputed_lower_bound", v.recomputed, false},
           {"checked_lower_bound", v.checked, true}};
 }
+
+// The shortest decimal that reads back as x (valid JSON too).
+std::string shortest(double x) {
+  char b[32];
+  return std::string(b, std::to_chars(b, b + sizeof b, x).ptr);
+}
+
+// Every cell searched down to eps: no N leaf, no U leaf wider than eps.
+bool complete(const Verdict& v) { return v.unexplored == 0 && v.wide_undecided == 0; }
 
 // One line. The robot's name, the one field a user controls, comes last and quoted.
 std::string text_line(const Verdict& v) {
@@ -821,7 +845,7 @@ std::string text_line(const Verdict& v) {
     return s + ": " + v.reason;
   }
   s += " sha256(cert)=" + v.cert_sha + " sha256(model)=" + v.model_sha;
-  s += v.unexplored ? " complete=no" : " complete=yes";  // no: a stopped run's certificate
+  s += std::string(complete(v) ? " complete=yes" : " complete=no") + " eps=" + shortest(v.eps);
   for (const Count& c : counts(v))
     if (c.in_text) s += std::string(" ") + c.name + "=" + std::to_string(c.value);
   s += " robot=" + quoted(v.robot);
@@ -838,7 +862,8 @@ std::string json_line(const Verdict& v, int code) {
     s += ", \"sha256_cert\": " + quoted(v.cert_sha);
     s += ", \"sha256_model\": " + quoted(v.model_sha);
     s += ", \"robot\": " + quoted(v.robot);
-    s += std::string(", \"complete\": ") + (v.unexplored ? "false" : "true");
+    s += std::string(", \"complete\": ") + (complete(v) ? "true" : "false");
+    s += ", \"eps\": " + shortest(v.eps);
     for (const Count& c : counts(v))
       s += std::string(", \"") + c.name + "\": " + std::to_string(c.value);
     s += std::string(", \"user_factors\": ") + (v.user_factors ? "true" : "false");

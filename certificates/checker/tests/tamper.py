@@ -21,6 +21,7 @@ still true of the edited model; each case says which). Last, the exit statuses 3
 import hashlib
 import re
 import json
+import math
 import os
 import subprocess
 import sys
@@ -450,7 +451,18 @@ def mutations_golden():
         ("line_split", "discard_record_dropped", lambda c: drop(c, c.find("X")[0]), 1),
         ("line_split", "link_witness_not_a_double_point_of_both",
          lambda c: replace_first(c, "K", lambda f: f.__setitem__(4, hx(0.25))), 1),
+        # complete=yes needs every U leaf at most eps wide (FORMAT.md, "U"): its U leaf is
+        # 1 wide, so complete=no at eps 0.25 and complete=yes at eps 1.
+        ("line_undecided", "eps_raised_to_the_undecided_width", lambda c: set_eps(c, 1.0),
+         (0, " complete=yes eps=1 ")),
+        ("circle", "eps_below_the_undecided_widths", lambda c: set_eps(c, 2.0 ** -10),
+         (0, " complete=no eps=0.0009765625 ")),
     ]
+
+
+def set_eps(c, eps):
+    c.lines[c.find("eps")[0]] = "eps " + hx(eps)
+    return c.text()
 
 
 def replace_first_where(c, kind, pred, fn):
@@ -541,7 +553,9 @@ def main():
         failed += solved_cases(check, sys.argv[4], work)
         failed += witness_cases(check, sys.argv[4], work)
         failed += assembly_cases(check, sys.argv[4], work)
+        failed += completeness_cases(check, sys.argv[4], sys.argv[5], work)
     failed += work_limit_cases(check, work)
+    failed += width_rule_cases(check, work)
     return 1 if failed else 0
 
 
@@ -812,6 +826,74 @@ def assembly_cases(check, aspects, work):
         ok = code == want and word in msg
         print("%s assembly/%-46s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
                                                                code, want, word, msg[:110]))
+        failed += not ok
+    return failed
+
+
+def completeness_cases(check, aspects, robots, work):
+    """complete=yes is established like the bound (FORMAT.md, "U" and "N"): a PRRP run
+    stopped after 3 boxes leaves unexplored cells wider than eps; relabelled U they verify
+    (the same claims) but not as complete. The full PRRP run is complete at its eps."""
+    out = os.path.join(work, "prrp_partial")
+    subprocess.run([aspects, "solve", os.path.join(robots, "prrp.robot"), "--eps", "0.1",
+                    "--max-boxes", "3", "--threads", "1", "--out", out, "--quiet"])
+    part = open(os.path.join(out, "aspects.cert")).read()
+    full = open(os.path.join(work, "prrp", "aspects.cert")).read()
+    unexplored = len(Cert(part).find("N"))
+    relabel = lambda c: "".join(("U" + l[1:] if l.startswith("N ") else l) + "\n" for l in c.lines)
+    cases = [
+        ("partial", part, lambda c: c.text(), (0, " complete=no eps=0.1 ")),
+        ("unexplored_relabelled_undecided", part, relabel,
+         (0, " complete=no eps=0.1 solutions=0 undecided=%d unexplored=0 wide_undecided=%d "
+          % (unexplored, unexplored))),
+        # complete is relative to the eps it prints: at 1000 every cell is small enough.
+        ("relabelled_and_eps_raised", part, lambda c: set_eps(Cert(relabel(c)), 1000.0),
+         (0, " complete=yes eps=1000 ")),
+        ("full", full, lambda c: c.text(), (0, " complete=yes eps=0.1 ")),
+        ("full_eps_halved", full, lambda c: set_eps(c, 0.05), (0, " complete=no eps=0.05 ")),
+    ]
+    failed = 0 if unexplored >= 2 else 1
+    for name, base, fn, (want, word) in cases:
+        path = os.path.join(work, "complete__%s.cert" % name)
+        with open(path, "w") as f:
+            f.write(fn(Cert(base)))
+        code, msg = run(check, path)
+        ok = code == want and word in msg
+        print("%s complete/%-46s exit %d (want %d, '%s'): %s" % ("ok  " if ok else "FAIL", name,
+                                                               code, want, word, msg[:110]))
+        failed += not ok
+    return failed
+
+
+def width_rule_cases(check, work):
+    """The leaf rule compares widths with eps exactly: the root cell of x in [0.3, 1] is
+    1 - RD(0.3) wide, which no double is (rounded to nearest it is below), so the largest
+    double below the width gives complete=no and the smallest above it complete=yes; a
+    test of the rounded width would say complete=yes for both."""
+    from fractions import Fraction
+    text = "robot WIDTH\npose x in [0.3, 1]\ncommand q in [0, 0.5]\nequation x - q = 0"
+    lo = 0.3  # the enclosure of 0.3 rounded down: the double 0.3 is below 3/10
+    assert Fraction(lo) < Fraction(3, 10)
+    width = Fraction(1) - Fraction(lo)
+    below = 1 - lo
+    above = math.nextafter(below, 2)
+    assert Fraction(below) < width < Fraction(above)
+    failed = 0
+    for eps, word in ((below, " complete=no "), (above, " complete=yes ")):
+        b = text.encode()
+        lines = ["aspects-certificate 2", "tool aspects 0.1.0",
+                 "model %d %s" % (len(b), hashlib.sha256(b).hexdigest()), text, "end-model",
+                 "precision 53", "tau 0x1p+0", "eps " + hx(eps),
+                 "domain %s 0x1p+0 0x0p+0 0x1p-1" % hx(lo), "factors 0", "tree", "U 0 .",
+                 "end-tree 1", "links 0", "csncs 0", "claim filtered 0", "claim lower-bound 0"]
+        lines.append("end %d" % (len(lines) + text.count("\n")))
+        path = os.path.join(work, "width_rule_%s.cert" % word.strip())
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        code, msg = run(check, path)
+        ok = code == 0 and word in msg
+        print("%s width/%-49s exit %d (want 0, '%s'): %s" % ("ok  " if ok else "FAIL", hx(eps),
+                                                           code, word, msg[:110]))
         failed += not ok
     return failed
 
