@@ -89,6 +89,15 @@ bool SinCos::enclose_doubles(double lo, double hi, DInterval& s, DInterval& c) {
   return true;
 }
 
+void SinCos::enclose(const DInterval& a, DInterval& s, DInterval& c) {
+  if (enclose_doubles(a.lo, a.hi, s, c)) return;
+  mpfi_arg_.set_hull(a.lo, a.hi);
+  mpfi_sin(mpfi_sin_.get(), mpfi_arg_.get());
+  mpfi_cos(mpfi_cos_.get(), mpfi_arg_.get());
+  s = to_dinterval(mpfi_sin_);
+  c = to_dinterval(mpfi_cos_);
+}
+
 void SinCos::arb_sin_cos(double t, double& s_lo, double& s_hi, double& c_lo, double& c_hi) {
   uint64_t bits;
   std::memcpy(&bits, &t, sizeof bits);

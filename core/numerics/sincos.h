@@ -36,6 +36,9 @@ class SinCos {
   // The same at 53 bits for a = [lo, hi] (doubles), in doubles. False, with nothing
   // computed, at another precision or when an end may be a multiple of π/2.
   bool enclose_doubles(double lo, double hi, DInterval& s, DInterval& c);
+  // The same at 53 bits, in doubles: enclose_doubles, or MPFI's own sin and cos where an
+  // end may be a multiple of π/2 (rare). The ends of enclose(Interval) at 53 bits.
+  void enclose(const DInterval& a, DInterval& s, DInterval& c);
 
  private:
   // True, with the quadrant index j ([lo, hi] ⊂ (jπ/2, (j+1)π/2)), when that is certain.
@@ -53,6 +56,7 @@ class SinCos {
   bool doubles_;  // the working precision is 53 bits
   mpfr_t s_lo_, c_lo_, s_hi_, c_hi_;
   ArbBounds arb_;
+  Interval mpfi_arg_, mpfi_sin_, mpfi_cos_;  // enclose(DInterval) through MPFI
 };
 
 }  // namespace aspects
