@@ -8,9 +8,9 @@
 // except at 53 bits when each end lies strictly inside a quadrant: then the critical
 // points inside are the multiples of π/2 between the ends' quadrants.
 // At 53 bits (endpoints are doubles) the endpoint values come from Arb's arb_sin_cos, a
-// rigorous ball, rounded outward to doubles: about four times faster than mpfr_sin_cos,
-// which was a fifth of the run time (bench/RESULTS.md). Above 53 bits, MPFR in RNDN with
-// one step outward.
+// rigorous ball, rounded outward to doubles: several times cheaper than mpfr_sin_cos, and
+// sin and cos are a large part of every evaluation. Above 53 bits, MPFR in RNDN with one
+// step outward.
 #pragma once
 
 #include <mpfr.h>
