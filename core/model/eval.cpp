@@ -7,19 +7,19 @@ Evaluator::Evaluator(const Dag& dag)
                    ? new IntervalEvaluator<DInterval>(dag)
                    : nullptr),
       mpfi_(dag),
-      dag_(dag) {
-  if (doubles_) from_doubles_values_.resize(size_t(dag.size()));
-}
+      dag_(dag) {}
 
-// Nodes made after the evaluator get their place before any value() of this pass (a
-// later resize would move the values already handed out).
-void Evaluator::fit_values() {
+// Made at the first value() after a pass in doubles (many evaluators never need them),
+// then fitted at each pass to nodes made since: never during a pass, which would move the
+// values already handed out.
+void Evaluator::fit_values() const {
   if (from_doubles_values_.size() < size_t(dag_.size()))
     from_doubles_values_.resize(size_t(dag_.size()));
 }
 
 const Interval& Evaluator::value(int id) const {
   if (!from_doubles_) return mpfi_.value(id);
+  if (from_doubles_values_.empty()) fit_values();
   const DInterval d = doubles_->value(id);
   from_doubles_values_[id].set_hull(d.lo, d.hi);  // exact: both ends are doubles
   return from_doubles_values_[id];
@@ -34,7 +34,7 @@ EvalStatus Evaluator::forward(const std::vector<int>& program, const Box& box) {
   if (doubles_) {
     if (std::optional<EvalStatus> s = doubles_->forward(program, box)) {
       from_doubles_ = true;
-      fit_values();
+      if (!from_doubles_values_.empty()) fit_values();
       return *s;
     }
   }
@@ -48,7 +48,7 @@ bool Evaluator::hc4_revise(const std::vector<int>& program, int root, const Inte
     if (std::optional<bool> feasible =
             doubles_->hc4_revise(program, root, to_dinterval(target), box)) {
       from_doubles_ = true;
-      fit_values();
+      if (!from_doubles_values_.empty()) fit_values();
       return *feasible;
     }
   }

@@ -36,7 +36,7 @@ class Evaluator {
   bool hc4_revise(const std::vector<int>& program, int root, const Interval& target, Box& box);
 
  private:
-  void fit_values();
+  void fit_values() const;
 
   std::unique_ptr<IntervalEvaluator<DInterval>> doubles_;  // null unless at 53 bits
   IntervalEvaluator<Interval> mpfi_;

@@ -14,11 +14,14 @@ IntervalEvaluator<I>::IntervalEvaluator(const Dag& dag) : dag_(dag) {
 template <class I>
 void IntervalEvaluator<I>::fit_to_dag() {
   const size_t old_size = v_.size(), size = size_t(dag_.size());
-  for (std::vector<I>* a : {&v_, &fwd_, &consts_, &trig_arg_, &trig_sin_, &trig_cos_})
-    a->resize(size);
+  for (std::vector<I>* a : {&v_, &fwd_, &trig_arg_, &trig_sin_, &trig_cos_}) a->resize(size);
   trig_ok_.resize(size, 0);
-  for (size_t id = old_size; id < size; ++id)
-    if (dag_.node(int(id)).op == Op::Const) iops::assign(consts_[id], dag_.constant_value(int(id)));
+  for (size_t id = old_size; id < size; ++id) {
+    const Node& n = dag_.node(int(id));
+    if (n.op != Op::Const) continue;
+    if (size_t(n.k) >= consts_.size()) consts_.resize(size_t(n.k) + 1);
+    iops::assign(consts_[n.k], dag_.constant_value(int(id)));
+  }
 }
 
 template <class I>
@@ -129,14 +132,14 @@ typename IntervalEvaluator<I>::NodeEval IntervalEvaluator<I>::forward_node(int i
   I& r = v_[id];
   const I* a = n.a >= 0 ? &v_[n.a] : nullptr;
   const I* b = n.b >= 0 ? &v_[n.b] : nullptr;
-  if ((a && iops::empty(*a)) || (b && iops::empty(*b))) {
-    iops::assign(r, (a && iops::empty(*a)) ? *a : *b);  // stays empty
+  if ((a && iops::may_be_empty(*a)) || (b && iops::may_be_empty(*b))) {
+    iops::assign(r, (a && iops::may_be_empty(*a)) ? *a : *b);  // stays empty
     return NodeEval::Undefined;
   }
   NodeEval e = NodeEval::Defined;
   bool done = true;  // false: a primitive declined
   switch (n.op) {
-    case Op::Const: iops::assign(r, consts_[id]); break;
+    case Op::Const: iops::assign(r, consts_[n.k]); break;
     case Op::Var: done = iops::load(r, box[n.k]); break;
     case Op::Add: iops::add(r, *a, *b); break;
     case Op::Sub: iops::sub(r, *a, *b); break;

@@ -29,6 +29,10 @@ namespace iops {
 
 inline bool empty(const Interval& x) { return x.empty(); }
 inline bool empty(const DInterval& x) { return aspects::is_empty(x); }
+// As empty, for a value of a forward pass: doubles decline every operation that could
+// make one empty (an empty box, an argument outside a domain), so theirs never is.
+inline bool may_be_empty(const Interval& x) { return x.empty(); }
+inline constexpr bool may_be_empty(const DInterval&) { return false; }
 inline bool bounded(const Interval& x) { return x.bounded(); }
 inline bool bounded(const DInterval& x) { return aspects::is_finite(x); }
 inline bool is_nan(const Interval& x) { return mpfi_nan_p(x.get()); }

@@ -89,8 +89,7 @@ bool SinCos::enclose_doubles(double lo, double hi, DInterval& s, DInterval& c) {
   return true;
 }
 
-void SinCos::enclose(const DInterval& a, DInterval& s, DInterval& c) {
-  if (enclose_doubles(a.lo, a.hi, s, c)) return;
+void SinCos::enclose_by_mpfi(const DInterval& a, DInterval& s, DInterval& c) {
   mpfi_arg_.set_hull(a.lo, a.hi);
   mpfi_sin(mpfi_sin_.get(), mpfi_arg_.get());
   mpfi_cos(mpfi_cos_.get(), mpfi_arg_.get());

@@ -38,7 +38,9 @@ class SinCos {
   bool enclose_doubles(double lo, double hi, DInterval& s, DInterval& c);
   // The same at 53 bits, in doubles: enclose_doubles, or MPFI's own sin and cos where an
   // end may be a multiple of π/2 (rare). The ends of enclose(Interval) at 53 bits.
-  void enclose(const DInterval& a, DInterval& s, DInterval& c);
+  void enclose(const DInterval& a, DInterval& s, DInterval& c) {
+    if (!enclose_doubles(a.lo, a.hi, s, c)) enclose_by_mpfi(a, s, c);
+  }
 
  private:
   // True, with the quadrant index j ([lo, hi] ⊂ (jπ/2, (j+1)π/2)), when that is certain.
@@ -46,6 +48,7 @@ class SinCos {
   // Which of sin and cos increase on quadrant j.
   static void monotony(long j, bool& sin_up, bool& cos_up);
   void enclose_mpfr(const Interval& a, bool sin_up, bool cos_up, Interval& s, Interval& c);
+  void enclose_by_mpfi(const DInterval& a, DInterval& s, DInterval& c);
   // Arb's bounds at one point, remembered: a box's children share an end with it, and
   // the proofs evaluate the same box several times (direct mapped on the point's bits).
   void arb_sin_cos(double t, double& s_lo, double& s_hi, double& c_lo, double& c_hi);
