@@ -1,16 +1,27 @@
-// The double-endpoint fast path (core/numerics/double_interval.h, core/model/double_eval.h) against MPFI
-// at 53 bits: the same ends bit for bit, operation by operation and node by node on
-// random boxes of every robot, and a hand-back (nullopt) for what it does not take.
+// The evaluator's two instantiations (core/model/interval_eval.h) at 53 bits: on doubles
+// (core/numerics/double_interval.h, core/numerics/evaluator_ops.h) and on MPFI, the same
+// ends bit for bit, operation by operation, and node by node on random boxes of every
+// robot of robots/ (the equations, both Jacobians and the determinant factors, and every
+// HC4-Revise); and a hand-back (nullopt) for what doubles do not take.
+//
+// Seen failing (each break made in core/numerics/evaluator_ops.h, then reverted):
+//  - sqr on doubles as the product a·a (no case for an a holding 0): every robot fails
+//    in the forward comparison;
+//  - base_angle on doubles with acos' ends swapped ({lo_lo, hi_hi}): the six robots with
+//    a cos in an equation fail on an HC4 verdict (forward values still agree); prrp and
+//    rprpr pass.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
+#include <filesystem>
 #include <fstream>
-#include <memory>
 #include <random>
 #include <sstream>
 
-#include "model/double_eval.h"
+#include "model/determinant_factors.h"
 #include "model/eval.h"
+#include "model/interval_eval.h"
 #include "model/model.h"
 
 namespace {
@@ -116,6 +127,9 @@ TEST(DoubleInterval, ExactResultsAreNotWidened) {
 
 namespace {
 
+using aspects::Box;
+using aspects::IntervalEvaluator;
+
 std::string read(const std::string& path) {
   std::ifstream in(path);
   std::stringstream ss;
@@ -123,7 +137,36 @@ std::string read(const std::string& path) {
   return ss.str();
 }
 
-class DoubleEvalRobot : public ::testing::TestWithParam<const char*> {};
+// Every robot model in robots/, by file name.
+std::vector<std::string> robot_files() {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(ASPECTS_ROBOTS_DIR))
+    if (e.path().extension() == ".robot") names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A random sub-box of the domain, of random width down to about 2^-12 of it.
+Box random_box(const Box& dom, std::mt19937_64& g) {
+  std::uniform_real_distribution<double> U(0, 1);
+  Box box(dom.size());
+  for (size_t v = 0; v < dom.size(); ++v) {
+    double lo = dom[v].lo_down(), hi = dom[v].hi_up();
+    double c = lo + (hi - lo) * U(g), w = (hi - lo) * std::ldexp(U(g), -int(U(g) * 12));
+    box[v].set_hull(std::max(lo, c - w / 2), std::min(hi, c + w / 2));
+  }
+  return box;
+}
+
+bool same_ends(const DInterval& d, const Interval& m) {
+  return d.lo == m.lo_down() && d.hi == m.hi_up();
+}
+
+bool same_boxes(const Box& x, const Box& y) {
+  for (size_t v = 0; v < x.size(); ++v)
+    if (x[v].lo_down() != y[v].lo_down() || x[v].hi_up() != y[v].hi_up()) return false;
+  return true;
+}
 
 // An evaluator without the double fast path (the switch is read when it is created).
 std::unique_ptr<aspects::Evaluator> mpfi_evaluator(const aspects::Dag& dag) {
@@ -133,72 +176,74 @@ std::unique_ptr<aspects::Evaluator> mpfi_evaluator(const aspects::Dag& dag) {
   return ev;
 }
 
+class BothInstantiations : public ::testing::TestWithParam<std::string> {};
+
 }  // namespace
 
-// Every node of the equations and both Jacobians, and every HC4-Revise, as MPFI gives them.
-TEST_P(DoubleEvalRobot, SameValuesAndContractionsAsMpfi) {
+TEST(BothInstantiations, EveryRobotOfTheDirectoryIsCompared) {
+  const std::vector<std::string> files = robot_files();
+  for (const char* known : {"3rpr.robot", "3rrr_star.robot", "prrp.robot", "rprpr.robot",
+                            "rrrrr.robot", "rrrrr_collisions.robot", "rrrrr_joint_limit.robot",
+                            "rrrrr_obstacle.robot"})
+    EXPECT_NE(std::find(files.begin(), files.end(), known), files.end()) << known;
+}
+
+// Every node of the equations, both Jacobians and the determinant factors, and every
+// HC4-Revise on each equation: the same status, verdicts and ends on doubles as on MPFI.
+TEST_P(BothInstantiations, SameValuesAndContractions) {
   aspects::set_working_precision(53);
   const std::string path = std::string(ASPECTS_ROBOTS_DIR) + "/" + GetParam();
   aspects::Model m = aspects::parse_model(read(path), path);
+  const std::vector<aspects::Factor> factors = aspects::determinant_factors(m);
   std::vector<int> roots = m.equations;
   roots.insert(roots.end(), m.fx.begin(), m.fx.end());
   roots.insert(roots.end(), m.fq.begin(), m.fq.end());
+  for (const aspects::Factor& f : factors) roots.push_back(f.node);
   const std::vector<int> program = m.dag.closure(roots);
-  aspects::DoubleEvaluator fast(m.dag);
-  std::unique_ptr<aspects::Evaluator> mpfi = mpfi_evaluator(m.dag);
-  aspects::Evaluator& slow = *mpfi;
-  const aspects::Box dom = m.initial_box();
-  const int nv = int(dom.size());
+  IntervalEvaluator<DInterval> fast(m.dag);
+  IntervalEvaluator<Interval> slow(m.dag);
+  const Box dom = m.initial_box();
   std::mt19937_64 g(2026);
-  std::uniform_real_distribution<double> U(0, 1);
-  int contracted = 0, infeasible = 0;
+  int contracted = 0, infeasible = 0, partial = 0;
   for (int trial = 0; trial < 600; ++trial) {
-    aspects::Box box(nv);
-    for (int v = 0; v < nv; ++v) {
-      double lo = dom[v].lo_down(), hi = dom[v].hi_up();
-      double c = lo + (hi - lo) * U(g), w = (hi - lo) * std::ldexp(U(g), -int(U(g) * 12));
-      box[v].set_hull(std::max(lo, c - w / 2), std::min(hi, c + w / 2));
-    }
+    const Box box = random_box(dom, g);
     std::optional<aspects::EvalStatus> s = fast.forward(program, box);
     ASSERT_TRUE(s.has_value()) << GetParam() << " trial " << trial;
-    ASSERT_EQ(*s, slow.forward(program, box));
-    for (int id : program) {
-      ASSERT_EQ(fast.value(id).lo, slow.value(id).lo_down()) << GetParam() << " node " << id;
-      ASSERT_EQ(fast.value(id).hi, slow.value(id).hi_up()) << GetParam() << " node " << id;
-    }
+    ASSERT_EQ(*s, *slow.forward(program, box));
+    if (*s != aspects::EvalStatus::Defined) ++partial;
+    for (int id : program)
+      ASSERT_TRUE(same_ends(fast.value(id), slow.value(id)))
+          << GetParam() << " trial " << trial << " node " << id << ": "
+          << fast.value(id).lo << " " << fast.value(id).hi << " vs " << slow.value(id).str();
     for (int eq : m.equations) {
       const std::vector<int> p = m.dag.closure({eq});
-      aspects::Box bf = box, bs = box;
+      Box bf = box, bs = box;
       std::optional<bool> ok = fast.hc4_revise(p, eq, {0, 0}, bf);
       ASSERT_TRUE(ok.has_value());
-      ASSERT_EQ(*ok, slow.hc4_revise(p, eq, Interval(0.0), bs));
+      ASSERT_EQ(*ok, *slow.hc4_revise(p, eq, Interval(0.0), bs));
+      ASSERT_TRUE(same_boxes(bf, bs)) << GetParam() << " trial " << trial;
       if (!*ok) {
+        ASSERT_TRUE(same_boxes(bf, box)) << "a rejected box is left as it was";
         ++infeasible;
-        continue;
-      }
-      for (int v = 0; v < nv; ++v) {
-        ASSERT_EQ(bf[v].lo_down(), bs[v].lo_down()) << GetParam() << " trial " << trial;
-        ASSERT_EQ(bf[v].hi_up(), bs[v].hi_up()) << GetParam() << " trial " << trial;
-        if (bf[v].lo_down() != box[v].lo_down() || bf[v].hi_up() != box[v].hi_up()) ++contracted;
+      } else if (!same_boxes(bf, box)) {
+        ++contracted;
       }
     }
   }
   // The comparison covered contractions and rejections, not only unchanged boxes.
   EXPECT_GT(contracted, 50) << GetParam();
   EXPECT_GT(infeasible, 10) << GetParam();
+  EXPECT_LT(partial, 600) << GetParam();
 }
 
-INSTANTIATE_TEST_SUITE_P(Robots, DoubleEvalRobot,
-                         ::testing::Values("prrp.robot", "rprpr.robot", "rrrrr.robot",
-                                           "3rpr.robot", "3rrr_star.robot",
-                                           "rrrrr_collisions.robot", "rrrrr_joint_limit.robot",
-                                           "rrrrr_obstacle.robot"),
+INSTANTIATE_TEST_SUITE_P(Robots, BothInstantiations, ::testing::ValuesIn(robot_files()),
                          [](const auto& info) {
                            std::string s = info.param;
                            return s.substr(0, s.find('.'));
                          });
 
-// What the fast path does not take it hands back, and the evaluator's answer is MPFI's.
+// What doubles do not take they hand back, with the box untouched, and the facade's
+// answer is MPFI's.
 TEST(DoubleEval, HandsBackWhatItDoesNotTake) {
   aspects::set_working_precision(53);
   aspects::Dag dag;
@@ -207,18 +252,22 @@ TEST(DoubleEval, HandsBackWhatItDoesNotTake) {
   const int inv = dag.binary(aspects::Op::Div, dag.one(), x);
   const int root = dag.unary(aspects::Op::Sqrt, x);
   const int cube = dag.pow(x, 3);
+  const int inv_cube = dag.pow(x, -3);
   const int cube_minus = dag.binary(aspects::Op::Sub, cube, dag.constant(8.0));
-  aspects::DoubleEvaluator fast(dag);
+  IntervalEvaluator<DInterval> fast(dag);
   aspects::Evaluator with(dag);
   std::unique_ptr<aspects::Evaluator> mpfi = mpfi_evaluator(dag);
   aspects::Evaluator& without = *mpfi;
-  const aspects::Box pos{Interval(1, 4)}, straddle{Interval(-1, 4)};
+  const Box pos{Interval(1, 4)}, straddle{Interval(-1, 4)};
+  Box empty{Interval(1, 2)};
+  ASSERT_FALSE(empty[0].intersect(Interval(3, 4)));
   struct Case {
     int node;
-    aspects::Box box;
+    Box box;
     bool taken;
-  } cases[] = {{ex, pos, false},    {inv, pos, true},       {inv, straddle, false},
-               {root, pos, true},   {root, straddle, false}, {cube, straddle, true}};
+  } cases[] = {{ex, pos, false},       {inv, pos, true},        {inv, straddle, false},
+               {root, pos, true},      {root, straddle, false}, {cube, straddle, true},
+               {inv_cube, pos, false}, {x, empty, false}};
   for (const Case& c : cases) {
     const std::vector<int> p = dag.closure({c.node});
     EXPECT_EQ(fast.forward(p, c.box).has_value(), c.taken) << dag.to_string(c.node, {"x"});
@@ -229,9 +278,10 @@ TEST(DoubleEval, HandsBackWhatItDoesNotTake) {
   EXPECT_EQ(with.forward(dag.closure({inv}), straddle), aspects::EvalStatus::Partial);
   // x^3 = 8 needs a cube root backward: handed back, and MPFI contracts [-1, 4] to [2, 2].
   const std::vector<int> p = dag.closure({cube_minus});
-  aspects::Box b = straddle;
+  Box b = straddle;
   EXPECT_FALSE(fast.hc4_revise(p, cube_minus, {0, 0}, b).has_value());
   EXPECT_EQ(b[0].lo_down(), -1);  // untouched
+  EXPECT_EQ(b[0].hi_up(), 4);
   ASSERT_TRUE(with.hc4_revise(p, cube_minus, Interval(0.0), b));
   EXPECT_EQ(b[0].lo_down(), 2);
   EXPECT_EQ(b[0].hi_up(), 2);

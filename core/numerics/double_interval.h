@@ -9,8 +9,8 @@
 // unconditionally: still sound, one ulp wider. An overflowing end becomes the largest
 // finite double on the side of the exact value, or the infinity beyond it.
 //
-// Callers keep every value finite: core/model/double_eval.cpp hands any infinite or NaN value
-// back to the MPFI evaluator.
+// Callers keep every value finite: the evaluator (core/model/interval_eval.h) hands any
+// infinite or NaN value back to MPFI.
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // Direct access to the MPFR endpoints of an MPFI interval, and the constant intervals
-// the evaluator's kernels intersect with. Internal to core/model/eval.cpp and core/model/backward.cpp.
+// the evaluator's kernels intersect with. Internal to the MPFI primitives
+// (core/numerics/evaluator_ops.h).
 #pragma once
 
 #include "numerics/interval.h"

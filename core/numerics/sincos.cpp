@@ -71,8 +71,8 @@ bool SinCos::enclose_doubles(double lo, double hi, DInterval& s, DInterval& c) {
     c = {std::max(-1.0, cl[cos_up ? 0 : u]), std::min(1.0, ch[cos_up ? u : 0])};
     return true;
   }
-  // Ends in different quadrants (MPFI's mpfi_sin and mpfi_cos took 12 % of a search
-  // here): over [lo, hi] each function ranges over its values at the ends and at its
+  // Ends in different quadrants (common enough that MPFI's mpfi_sin and mpfi_cos would
+  // cost much): over [lo, hi] each function ranges over its values at the ends and at its
   // critical points inside, the multiples kπ/2 for k = j+1 .. j_hi, where it is ±1.
   s = {std::min(sl[0], sl[1]), std::max(sh[0], sh[1])};
   c = {std::min(cl[0], cl[1]), std::max(ch[0], ch[1])};
@@ -87,6 +87,14 @@ bool SinCos::enclose_doubles(double lo, double hi, DInterval& s, DInterval& c) {
   s = {std::max(-1.0, s.lo), std::min(1.0, s.hi)};
   c = {std::max(-1.0, c.lo), std::min(1.0, c.hi)};
   return true;
+}
+
+void SinCos::enclose_by_mpfi(const DInterval& a, DInterval& s, DInterval& c) {
+  mpfi_arg_.set_hull(a.lo, a.hi);
+  mpfi_sin(mpfi_sin_.get(), mpfi_arg_.get());
+  mpfi_cos(mpfi_cos_.get(), mpfi_arg_.get());
+  s = to_dinterval(mpfi_sin_);
+  c = to_dinterval(mpfi_cos_);
 }
 
 void SinCos::arb_sin_cos(double t, double& s_lo, double& s_hi, double& c_lo, double& c_hi) {

@@ -8,9 +8,9 @@
 // except at 53 bits when each end lies strictly inside a quadrant: then the critical
 // points inside are the multiples of π/2 between the ends' quadrants.
 // At 53 bits (endpoints are doubles) the endpoint values come from Arb's arb_sin_cos, a
-// rigorous ball, rounded outward to doubles: about four times faster than mpfr_sin_cos,
-// which was a fifth of the run time (bench/RESULTS.md). Above 53 bits, MPFR in RNDN with
-// one step outward.
+// rigorous ball, rounded outward to doubles: several times cheaper than mpfr_sin_cos, and
+// sin and cos are a large part of every evaluation. Above 53 bits, MPFR in RNDN with one
+// step outward.
 #pragma once
 
 #include <mpfr.h>
@@ -36,6 +36,11 @@ class SinCos {
   // The same at 53 bits for a = [lo, hi] (doubles), in doubles. False, with nothing
   // computed, at another precision or when an end may be a multiple of π/2.
   bool enclose_doubles(double lo, double hi, DInterval& s, DInterval& c);
+  // The same at 53 bits, in doubles: enclose_doubles, or MPFI's own sin and cos where an
+  // end may be a multiple of π/2 (rare). The ends of enclose(Interval) at 53 bits.
+  void enclose(const DInterval& a, DInterval& s, DInterval& c) {
+    if (!enclose_doubles(a.lo, a.hi, s, c)) enclose_by_mpfi(a, s, c);
+  }
 
  private:
   // True, with the quadrant index j ([lo, hi] ⊂ (jπ/2, (j+1)π/2)), when that is certain.
@@ -43,6 +48,7 @@ class SinCos {
   // Which of sin and cos increase on quadrant j.
   static void monotony(long j, bool& sin_up, bool& cos_up);
   void enclose_mpfr(const Interval& a, bool sin_up, bool cos_up, Interval& s, Interval& c);
+  void enclose_by_mpfi(const DInterval& a, DInterval& s, DInterval& c);
   // Arb's bounds at one point, remembered: a box's children share an end with it, and
   // the proofs evaluate the same box several times (direct mapped on the point's bits).
   void arb_sin_cos(double t, double& s_lo, double& s_hi, double& c_lo, double& c_hi);
@@ -53,6 +59,7 @@ class SinCos {
   bool doubles_;  // the working precision is 53 bits
   mpfr_t s_lo_, c_lo_, s_hi_, c_hi_;
   ArbBounds arb_;
+  Interval mpfi_arg_, mpfi_sin_, mpfi_cos_;  // enclose(DInterval) through MPFI
 };
 
 }  // namespace aspects
