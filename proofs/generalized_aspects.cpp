@@ -31,9 +31,12 @@ void count_leaves(AspectsResult& out) {
 
 AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   AspectsResult out;
-  // The phase during which a stop was first seen: it and those after it are partial.
+  // The phase during which a stop was first seen: it and those after it are partial (a
+  // spent max-boxes budget stops the search alone).
   PhaseClock clock([&](const std::string& phase, double seconds) {
-    if (out.stopped_in.empty() && config.stop && config.stop->stopped()) out.stopped_in = phase;
+    if (out.stopped_in.empty() && config.stop &&
+        (phase == std::string("search") ? config.stop->stopped() : config.stop->poll()))
+      out.stopped_in = phase;
     if (config.phase_done) config.phase_done(phase, seconds);
   });
   Parallel parallel(config.threads);

@@ -24,13 +24,15 @@ struct Stopped {
 
 // Solves RPRPR at eps 0.1 with its certificate, requesting a stop when `phase` ends, and
 // runs check_cert on the certificate.
-Stopped solve_stopped_after(const std::string& phase, const std::string& name) {
+Stopped solve_stopped_after(const std::string& phase, const std::string& name,
+                            long max_boxes = 0) {
   set_working_precision(53);
   Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rprpr.robot");
   const std::string path =
       (std::filesystem::temp_directory_path() / ("phase_stop_" + name + ".cert")).string();
   CertificateWriter cert(path, m, 53, 1.01, 0.1, false);
   StopCondition stop;
+  if (max_boxes > 0) stop.set_max_boxes(max_boxes);
   AspectsConfig cfg;
   cfg.eps = 0.1;
   cfg.threads = 2;
@@ -93,5 +95,19 @@ TEST(PhaseStops, AfterTheSeparationTheBoundStandsAndNoWitnessIsSought) {
   EXPECT_EQ(s.r.separation.lower_bound, whole.separation.lower_bound);
   EXPECT_TRUE(s.r.cuspidal.pose.empty());
   EXPECT_TRUE(s.r.cuspidal.command.empty());
+  EXPECT_EQ(s.check_status, 0);
+}
+
+// A spent max-boxes budget stops the search alone: the phases after it run whole on the
+// boxes it made.
+TEST(PhaseStops, AMaxBoxesStopLeavesTheLaterPhasesWhole) {
+  Stopped s = solve_stopped_after("", "max_boxes", 3000);
+  EXPECT_EQ(s.r.stopped_by, StopReason::MaxBoxes);
+  EXPECT_EQ(s.r.stopped_in, "search");
+  ASSERT_GT(s.r.unexplored, 0);
+  ASSERT_GT(s.r.solutions, 0);
+  EXPECT_GT(s.r.neighbor_count, 0u);
+  EXPECT_GT(s.r.certified_links.size(), 0u);
+  EXPECT_LT(long(s.r.csnc_sizes.size()), s.r.solutions);
   EXPECT_EQ(s.check_status, 0);
 }

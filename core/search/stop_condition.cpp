@@ -66,11 +66,15 @@ bool StopCondition::admit(long output_boxes) {
 }
 
 bool StopCondition::poll() {
-  if (stopped()) return true;
-  if (signals_ && g_signalled) request(StopReason::Signal);
-  else if (timed_ && std::chrono::steady_clock::now() >= deadline_) request(StopReason::TimeLimit);
-  else if (memory_limit_ > 0 && over_memory(0)) request(StopReason::MemoryLimit);
-  return stopped();
+  const StopReason r = reason();
+  if (r != StopReason::None && r != StopReason::MaxBoxes) return true;
+  StopReason now = StopReason::None;
+  if (signals_ && g_signalled) now = StopReason::Signal;
+  else if (timed_ && std::chrono::steady_clock::now() >= deadline_) now = StopReason::TimeLimit;
+  else if (memory_limit_ > 0 && over_memory(0)) now = StopReason::MemoryLimit;
+  if (now == StopReason::None) return false;
+  request(now);  // after a max-boxes stop the reason stays max-boxes
+  return true;
 }
 
 void watch_stop_signals() {

@@ -32,7 +32,7 @@ class StopCondition {
   bool admit(long output_boxes);
   // Between units of work of the phases after the search: true when the run must stop
   // (a signal, the time limit, the resident memory above the limit). The max-boxes budget
-  // counts the search's boxes only.
+  // counts the search's boxes only: once spent, the phases after the search still run.
   bool poll();
   void request(StopReason r);  // the first reason wins
   StopReason reason() const { return StopReason(reason_.load(std::memory_order_relaxed)); }
