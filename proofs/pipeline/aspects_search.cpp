@@ -29,7 +29,7 @@ PruneResult AspectsSearch::refuted(int32_t reason, const char* hint) {
 // Prune: the contraction, recorded for the certificate, then the constraints: a box where
 // one certainly fails holds no feasible configuration (paper 5.4).
 PruneResult AspectsSearch::prune(Box& box) {
-  cell_ = box;
+  if (sink_) cell_ = box;  // for the contraction records only
   if (Refutation r = parts_.contractor.contract(box)) {
     if (r.kind == Refutation::Equation) {
       ++diag_.refuted_by_equation;
