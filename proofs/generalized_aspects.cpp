@@ -73,8 +73,8 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   out.separation = separation.finish(whole_graph, out.tree, periodic, out.csnc, config);
   clock.lap("components and separation");
 
-  out.cuspidal = witness_phase(model, config, out.boxes, out.csnc, int(out.csnc_sizes.size()),
-                               parallel, clock);
+  out.cuspidal = witness_phase(model, config, periodic, out.boxes, out.csnc,
+                               int(out.csnc_sizes.size()), parallel, clock);
   if (config.stop && config.stop->stopped()) out.stopped_by = config.stop->reason();
   out.seconds = clock.total_seconds();
   out.phase_seconds = clock.seconds();

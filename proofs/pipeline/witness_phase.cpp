@@ -9,11 +9,10 @@
 namespace aspects {
 
 CuspidalWitnesses witness_phase(const Model& model, const AspectsConfig& config,
-                                const OutputBoxes& boxes, const std::vector<int32_t>& csnc,
-                                int csncs, Parallel& parallel, PhaseClock& clock) {
+                                const std::vector<bool>& periodic, const OutputBoxes& boxes,
+                                const std::vector<int32_t>& csnc, int csncs, Parallel& parallel,
+                                PhaseClock& clock) {
   CuspidalWitnesses w;
-  std::vector<bool> periodic;
-  for (const auto& v : model.vars) periodic.push_back(v.periodic);
   const WitnessSpace space(model.pose, model.command, periodic);
   if (!config.stopped())
     w = find_pose_witnesses(boxes.ends(), csnc, csncs, space, 10000, parallel.for_each());

@@ -18,8 +18,10 @@
 namespace aspects {
 
 // Laps "cuspidality" and "assembly witnesses" on `clock`.
+// `periodic`: per variable, as the neighbourhood graph took it.
 CuspidalWitnesses witness_phase(const Model& model, const AspectsConfig& config,
-                                const OutputBoxes& boxes, const std::vector<int32_t>& csnc,
-                                int csncs, Parallel& parallel, PhaseClock& clock);
+                                const std::vector<bool>& periodic, const OutputBoxes& boxes,
+                                const std::vector<int32_t>& csnc, int csncs, Parallel& parallel,
+                                PhaseClock& clock);
 
 }  // namespace aspects
