@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""A numerical, NOT certified, count of the aspects of the full 3-RRR (robots/3rrr.robot).
+
+Samples the pose (x1, x2, x3) on a regular grid, x3 periodic. For each pose and each of the
+8 working modes (the branch of each leg's inverse kinematics, q_i = phi_i +- acos(d_i / 20)),
+the commands are determined, so a working mode is a continuous sheet of the configuration
+manifold over the poses where every leg is reachable (0 < d_i < 20). Fq is diagonal: its
+entries vanish only where a leg is stretched or folded (d_i = 20 or 0), the edges of the
+sheet, so each sheet has constant det Fq signs. A generalized aspect is then a connected set
+of grid cells of one sheet where det Fx keeps its sign, found by flood fill (face
+neighbours, and across the x3 = +-pi seam).
+
+What sampling cannot see: a neck or a component thinner than the grid step, and a sign of
+det Fx at a point where it is nearly zero. Hence the study under refinement, and the
+separate count of components above a size threshold. The result is labelled numerical.
+
+Usage: robots/3rrr_sampling.py [N ...] [--json FILE]    (N: cells per axis, default 64 128)
+"""
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+from scipy import ndimage
+
+L = 10.0  # both link lengths, from the model
+BASES = ((10.0, 10.0), (10.0, 10.0), (0.0, 10.0))  # A1, A2, A3, read off robots/3rrr.robot
+R2 = 10.0 * math.sqrt(2.0)
+
+
+def platform_points(x1, x2, x3):
+    """P_i(x) and dP_i/dx3, as the model's equations write them."""
+    c, s = np.cos(x3), np.sin(x3)
+    c4, s4 = np.cos(x3 + math.pi / 4), np.sin(x3 + math.pi / 4)
+    pts = ((x1, x2), (x1 + L * c, x2 + L * s), (x1 + R2 * c4, x2 + R2 * s4))
+    dx3 = ((0.0 * x1, 0.0 * x2), (-L * s, L * c), (-R2 * s4, R2 * c4))
+    return pts, dx3
+
+
+def sheet(x1, x2, x3, mode):
+    """On one working mode: (valid, sign det Fx, signs of the Fq diagonal) per grid point."""
+    pts, dx3 = platform_points(x1, x2, x3)
+    rows, fq = [], []
+    valid = np.ones(np.broadcast(x1, x2, x3).shape, dtype=bool)
+    for (px, py), (dpx, dpy), (ax, ay), s in zip(pts, dx3, BASES, mode):
+        ux, uy = px - ax, py - ay
+        d = np.hypot(ux, uy)
+        valid &= (d > 0) & (d < 2 * L)
+        q = np.arctan2(uy, ux) + s * np.arccos(np.clip(d / (2 * L), -1.0, 1.0))
+        # f_i = |P_i - E_i|^2 - L^2 with E_i = A_i + L (cos q, sin q)
+        ex, ey = px - ax - L * np.cos(q), py - ay - L * np.sin(q)
+        rows.append((2 * ex, 2 * ey, 2 * (ex * dpx + ey * dpy)))
+        fq.append(2 * L * (ex * np.sin(q) - ey * np.cos(q)))
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    det_fx = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+    return valid, np.sign(det_fx), [np.sign(v) for v in fq]
+
+
+def label_periodic(mask):
+    """Face-connected components of a 3-D mask, periodic along the last axis."""
+    labels, n = ndimage.label(mask)
+    parent = list(range(n + 1))
+
+    def find(k):
+        while parent[k] != k:
+            parent[k] = parent[parent[k]]
+            k = parent[k]
+        return k
+
+    a, b = labels[:, :, 0], labels[:, :, -1]
+    for u, v in zip(a[(a > 0) & (b > 0)], b[(a > 0) & (b > 0)]):
+        ru, rv = find(u), find(v)
+        if ru != rv:
+            parent[ru] = rv
+    roots = np.array([find(k) for k in range(n + 1)])
+    sizes = np.bincount(roots[labels].ravel(), minlength=n + 1)
+    sizes[0] = 0
+    return sorted((int(s) for s in sizes if s > 0), reverse=True)
+
+
+def count(n):
+    """Components of every (mode, sign det Fx) class at n cells per axis (cell centres)."""
+    lo, hi = -10.0, 30.0  # |P1 - A1| < 20 confines (x1, x2) to this square
+    g = lo + (np.arange(n) + 0.5) * (hi - lo) / n
+    t = -math.pi + (np.arange(n) + 0.5) * 2 * math.pi / n
+    x1, x2, x3 = np.meshgrid(g, g, t, indexing="ij")
+    cell = ((hi - lo) / n) ** 2 * (2 * math.pi / n)
+    classes = []
+    for mode in [(s1, s2, s3) for s1 in (1, -1) for s2 in (1, -1) for s3 in (1, -1)]:
+        valid, sdx, sfq = sheet(x1, x2, x3, mode)
+        fq_signs = tuple(int(np.unique(v[valid & (v != 0)])[0]) if np.any(valid) else 0
+                         for v in sfq)
+        for sign in (1, -1):
+            sizes = label_periodic(valid & (sdx == sign))
+            classes.append(dict(mode=mode, fq_signs=fq_signs, det_fx=sign, sizes=sizes,
+                                volume=sum(sizes) * cell))
+    return classes
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("n", nargs="*", type=int, default=[64, 128])
+    ap.add_argument("--json", help="write the counts here")
+    ap.add_argument("--min-fraction", type=float, default=1e-4,
+                    help="a component counts as significant above this share of the cells")
+    args = ap.parse_args()
+    out = []
+    print("NUMERICAL (not certified): aspects of the full 3-RRR by sampling")
+    print(f"{'N':>5} {'components':>10} {'significant':>11}  per class (mode, det Fx sign): "
+          "component sizes")
+    for n in args.n:
+        classes = count(n)
+        total = sum(len(c["sizes"]) for c in classes)
+        cut = args.min_fraction * n ** 3
+        big = sum(sum(1 for s in c["sizes"] if s >= cut) for c in classes)
+        volume = sum(c["volume"] for c in classes)
+        second = max((c["sizes"][1] for c in classes if len(c["sizes"]) > 1), default=0)
+        smallest_main = min(c["sizes"][0] for c in classes if c["sizes"])
+        print(f"{n:>5} {total:>10} {big:>11}   pose volume of the 8 sheets: {volume:.1f}; "
+              f"smallest largest component {smallest_main / n**3:.4f} of the cells, "
+              f"largest other {second / n**3:.2e}")
+        for c in classes:
+            head = ", ".join(str(s) for s in c["sizes"][:4])
+            more = f" (+{len(c['sizes']) - 4} more)" if len(c["sizes"]) > 4 else ""
+            print(f"        mode {c['mode']} Fq signs {c['fq_signs']} det Fx {c['det_fx']:+d}: "
+                  f"{len(c['sizes'])} [{head}{more}]")
+        out.append(dict(n=n, components=total, significant=big, min_fraction=args.min_fraction,
+                        volume=volume, classes=classes))
+        sys.stdout.flush()
+    if args.json:
+        with open(args.json + ".tmp", "w") as f:
+            json.dump(dict(kind="numerical, not certified", runs=out), f, indent=1)
+        import os
+        os.replace(args.json + ".tmp", args.json)
+
+
+if __name__ == "__main__":
+    main()
