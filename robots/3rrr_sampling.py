@@ -14,7 +14,7 @@ What sampling cannot see: a neck or a component thinner than the grid step, and 
 det Fx at a point where it is nearly zero. Hence the study under refinement, and the
 separate count of components above a size threshold. The result is labelled numerical.
 
-Usage: robots/3rrr_sampling.py [N ...] [--json FILE]    (N: cells per axis, default 64 128)
+Usage: robots/3rrr_sampling.py [N ...] [--slice X3] [--json FILE]    (N: cells per axis, default 64 128)
 """
 import argparse
 import json
@@ -79,20 +79,39 @@ def label_periodic(mask):
     return sorted((int(s) for s in sizes if s > 0), reverse=True)
 
 
-def count(n):
-    """Components of every (mode, sign det Fx) class at n cells per axis (cell centres)."""
+def label_plane(mask):
+    """Edge-connected components of a 2-D mask."""
+    labels, n = ndimage.label(mask)
+    sizes = np.bincount(labels.ravel(), minlength=n + 1)[1:]
+    return sorted((int(s) for s in sizes if s > 0), reverse=True)
+
+
+def count(n, x3_slice=None):
+    """Components of every (mode, sign det Fx) class at n cells per axis (cell centres).
+    With x3_slice, the 2-D slice at that orientation (3-RRR*'s is 0), not periodic."""
     lo, hi = -10.0, 30.0  # |P1 - A1| < 20 confines (x1, x2) to this square
     g = lo + (np.arange(n) + 0.5) * (hi - lo) / n
-    t = -math.pi + (np.arange(n) + 0.5) * 2 * math.pi / n
-    x1, x2, x3 = np.meshgrid(g, g, t, indexing="ij")
-    cell = ((hi - lo) / n) ** 2 * (2 * math.pi / n)
+    if x3_slice is None:
+        t, dt = -math.pi + (np.arange(n) + 0.5) * 2 * math.pi / n, 2 * math.pi / n
+    else:
+        t, dt = np.array([x3_slice]), 1.0
+    cell = ((hi - lo) / n) ** 2 * dt
     classes = []
     for mode in [(s1, s2, s3) for s1 in (1, -1) for s2 in (1, -1) for s3 in (1, -1)]:
-        valid, sdx, sfq = sheet(x1, x2, x3, mode)
-        fq_signs = tuple(int(np.unique(v[valid & (v != 0)])[0]) if np.any(valid) else 0
-                         for v in sfq)
+        # sign of det Fx on the sheet, 0 where a leg cannot reach; computed in slabs of x1
+        # so that a fine grid fits in memory
+        signs = np.zeros((n, n, len(t)), dtype=np.int8)
+        fq_seen = [set() for _ in mode]
+        for a in range(0, n, 16):
+            x1, x2, x3 = np.meshgrid(g[a:a + 16], g, t, indexing="ij")
+            valid, sdx, sfq = sheet(x1, x2, x3, mode)
+            signs[a:a + 16] = np.where(valid, sdx, 0)
+            for seen, v in zip(fq_seen, sfq):
+                seen.update(np.unique(v[valid & (v != 0)]).astype(int).tolist())
+        fq_signs = tuple(seen.pop() if len(seen) == 1 else 0 for seen in fq_seen)
         for sign in (1, -1):
-            sizes = label_periodic(valid & (sdx == sign))
+            mask = signs == sign
+            sizes = label_periodic(mask) if x3_slice is None else label_plane(mask[:, :, 0])
             classes.append(dict(mode=mode, fq_signs=fq_signs, det_fx=sign, sizes=sizes,
                                 volume=sum(sizes) * cell))
     return classes
@@ -102,7 +121,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("n", nargs="*", type=int, default=[64, 128])
     ap.add_argument("--json", help="write the counts here")
-    ap.add_argument("--min-fraction", type=float, default=1e-4,
+    ap.add_argument("--slice", type=float, metavar="X3",
+                    help="count on the slice at this orientation only (3-RRR* is --slice 0)")
+    ap.add_argument("--min-fraction", type=float, default=1e-5,
                     help="a component counts as significant above this share of the cells")
     args = ap.parse_args()
     out = []
@@ -110,16 +131,17 @@ def main():
     print(f"{'N':>5} {'components':>10} {'significant':>11}  per class (mode, det Fx sign): "
           "component sizes")
     for n in args.n:
-        classes = count(n)
+        classes = count(n, args.slice)
         total = sum(len(c["sizes"]) for c in classes)
-        cut = args.min_fraction * n ** 3
+        cells = n ** 2 if args.slice is not None else n ** 3
+        cut = args.min_fraction * cells
         big = sum(sum(1 for s in c["sizes"] if s >= cut) for c in classes)
-        volume = sum(c["volume"] for c in classes)
+        volume = sum(c["volume"] for c in classes)  # an area on a slice
         second = max((c["sizes"][1] for c in classes if len(c["sizes"]) > 1), default=0)
         smallest_main = min(c["sizes"][0] for c in classes if c["sizes"])
         print(f"{n:>5} {total:>10} {big:>11}   pose volume of the 8 sheets: {volume:.1f}; "
-              f"smallest largest component {smallest_main / n**3:.4f} of the cells, "
-              f"largest other {second / n**3:.2e}")
+              f"smallest largest component {smallest_main / cells:.4f} of the cells, "
+              f"largest other {second / cells:.2e}")
         for c in classes:
             head = ", ".join(str(s) for s in c["sizes"][:4])
             more = f" (+{len(c['sizes']) - 4} more)" if len(c["sizes"]) > 4 else ""
