@@ -12,7 +12,7 @@ neighbours, and across the x3 = +-pi seam).
 
 What sampling cannot see: a neck or a component thinner than the grid step, and a sign of
 det Fx at a point where it is nearly zero. Hence the study under refinement, and the
-separate count of components above a size threshold. The result is labelled numerical.
+count of the thick components only (see components()). The result is labelled numerical.
 
 Usage: robots/3rrr_sampling.py [N ...] [--slice X3] [--json FILE]    (N: cells per axis, default 64 128)
 """
@@ -57,8 +57,12 @@ def sheet(x1, x2, x3, mode):
     return valid, np.sign(det_fx), [np.sign(v) for v in fq]
 
 
-def label_periodic(mask):
-    """Face-connected components of a 3-D mask, periodic along the last axis."""
+def components(mask, periodic):
+    """Face-connected components of a 2-D or 3-D mask (periodic along the last axis when
+    asked), as (cells, thick) sorted by size: thick when the component holds a cell whose
+    every neighbour, diagonals included, is in the mask. A sliver one or two cells thick
+    along a boundary, where sampling aliases, is not thick; a real component becomes thick
+    once the grid resolves it."""
     labels, n = ndimage.label(mask)
     parent = list(range(n + 1))
 
@@ -68,22 +72,23 @@ def label_periodic(mask):
             k = parent[k]
         return k
 
-    a, b = labels[:, :, 0], labels[:, :, -1]
-    for u, v in zip(a[(a > 0) & (b > 0)], b[(a > 0) & (b > 0)]):
-        ru, rv = find(u), find(v)
-        if ru != rv:
-            parent[ru] = rv
-    roots = np.array([find(k) for k in range(n + 1)])
-    sizes = np.bincount(roots[labels].ravel(), minlength=n + 1)
-    sizes[0] = 0
-    return sorted((int(s) for s in sizes if s > 0), reverse=True)
-
-
-def label_plane(mask):
-    """Edge-connected components of a 2-D mask."""
-    labels, n = ndimage.label(mask)
-    sizes = np.bincount(labels.ravel(), minlength=n + 1)[1:]
-    return sorted((int(s) for s in sizes if s > 0), reverse=True)
+    if periodic:
+        a, b = labels[..., 0], labels[..., -1]
+        for u, v in zip(a[(a > 0) & (b > 0)], b[(a > 0) & (b > 0)]):
+            ru, rv = find(u), find(v)
+            if ru != rv:
+                parent[ru] = rv
+    roots = np.array([find(k) for k in range(n + 1)])[labels]
+    sizes = np.bincount(roots.ravel(), minlength=n + 1)
+    wrap = [(0, 0)] * (mask.ndim - 1) + [(1, 1) if periodic else (0, 0)]
+    padded = np.pad(mask, wrap, mode="wrap") if periodic else mask
+    core = ndimage.binary_erosion(padded, structure=np.ones((3,) * mask.ndim), border_value=0)
+    if periodic:
+        core = core[..., 1:-1]
+    thick = np.zeros(n + 1, dtype=bool)
+    thick[np.unique(roots[core])] = True
+    return sorted(((int(sizes[k]), bool(thick[k])) for k in range(1, n + 1) if sizes[k] > 0),
+                  reverse=True)
 
 
 def count(n, x3_slice=None):
@@ -111,9 +116,13 @@ def count(n, x3_slice=None):
         fq_signs = tuple(seen.pop() if len(seen) == 1 else 0 for seen in fq_seen)
         for sign in (1, -1):
             mask = signs == sign
-            sizes = label_periodic(mask) if x3_slice is None else label_plane(mask[:, :, 0])
-            classes.append(dict(mode=mode, fq_signs=fq_signs, det_fx=sign, sizes=sizes,
-                                volume=sum(sizes) * cell))
+            comps = (components(mask, True) if x3_slice is None
+                     else components(mask[:, :, 0], False))
+            classes.append(dict(mode=mode, fq_signs=fq_signs, det_fx=sign,
+                                sizes=[c for c, _ in comps],
+                                thick=sum(1 for _, t in comps if t),
+                                thick_sizes=[c for c, t in comps if t],
+                                volume=sum(c for c, _ in comps) * cell))
     return classes
 
 
@@ -123,31 +132,28 @@ def main():
     ap.add_argument("--json", help="write the counts here")
     ap.add_argument("--slice", type=float, metavar="X3",
                     help="count on the slice at this orientation only (3-RRR* is --slice 0)")
-    ap.add_argument("--min-fraction", type=float, default=1e-5,
-                    help="a component counts as significant above this share of the cells")
     args = ap.parse_args()
     out = []
     print("NUMERICAL (not certified): aspects of the full 3-RRR by sampling")
-    print(f"{'N':>5} {'components':>10} {'significant':>11}  per class (mode, det Fx sign): "
-          "component sizes")
+    print(f"{'N':>5} {'components':>10} {'thick':>6}  per class (mode, det Fx sign): "
+          "components, thick ones [sizes in cells]")
     for n in args.n:
         classes = count(n, args.slice)
         total = sum(len(c["sizes"]) for c in classes)
         cells = n ** 2 if args.slice is not None else n ** 3
-        cut = args.min_fraction * cells
-        big = sum(sum(1 for s in c["sizes"] if s >= cut) for c in classes)
+        big = sum(c["thick"] for c in classes)
         volume = sum(c["volume"] for c in classes)  # an area on a slice
         second = max((c["sizes"][1] for c in classes if len(c["sizes"]) > 1), default=0)
         smallest_main = min(c["sizes"][0] for c in classes if c["sizes"])
-        print(f"{n:>5} {total:>10} {big:>11}   pose volume of the 8 sheets: {volume:.1f}; "
+        print(f"{n:>5} {total:>10} {big:>6}   pose volume of the 8 sheets: {volume:.1f}; "
               f"smallest largest component {smallest_main / cells:.4f} of the cells, "
               f"largest other {second / cells:.2e}")
         for c in classes:
             head = ", ".join(str(s) for s in c["sizes"][:4])
             more = f" (+{len(c['sizes']) - 4} more)" if len(c["sizes"]) > 4 else ""
             print(f"        mode {c['mode']} Fq signs {c['fq_signs']} det Fx {c['det_fx']:+d}: "
-                  f"{len(c['sizes'])} [{head}{more}]")
-        out.append(dict(n=n, components=total, significant=big, min_fraction=args.min_fraction,
+                  f"{len(c['sizes'])}, {c['thick']} thick [{head}{more}]")
+        out.append(dict(n=n, components=total, thick=big,
                         volume=volume, classes=classes))
         sys.stdout.flush()
     if args.json:
