@@ -106,9 +106,10 @@ def plot(rows, reference, png):
         ax[0].axhline(reference[1], color="grey", ls=":",
                       label=f"sampling count (numerical, not certified): {reference[1]}")
     ax[0].set_xscale("log")
-    ax[0].set_yscale("log")
+    ax[0].set_ylim(bottom=0)
     ax[0].invert_xaxis()
-    ax[0].set_xlabel("ε")
+    ax[0].set_xlabel("ε (log scale, finer to the right)")
+    ax[0].set_ylabel("count")
     ax[0].set_title("Full 3-RRR: aspects against ε")
     ax[0].legend(fontsize=8)
     shares = [(r["eps"], 100 * r["share"]) for r in rows if r["share"] is not None]
@@ -116,7 +117,7 @@ def plot(rows, reference, png):
         ax[1].plot([e for e, _ in shares], [s for _, s in shares], "o-")
     ax[1].set_xscale("log")
     ax[1].invert_xaxis()
-    ax[1].set_xlabel("ε")
+    ax[1].set_xlabel("ε (log scale, finer to the right)")
     ax[1].set_ylabel("% of the sheets' pose volume")
     ax[1].set_title("Pose volume in certified solution boxes")
     fig.tight_layout()
