@@ -61,6 +61,19 @@ json boxes_json(const AspectsResult& r) {
   return boxes;
 }
 
+// The classes that count toward the bound, as sign strings over the factors in their
+// listed order ("+-+": d1 > 0, d2 < 0, d3 > 0), with the components each one counts.
+json separated_classes_json(const SeparationResult& s, size_t factors) {
+  json classes = json::array();
+  for (size_t c = 0; c < s.per_class.size(); ++c) {
+    if (s.per_class[c] == 0) continue;
+    std::string signs;
+    for (size_t i = 0; i < factors; ++i) signs += (c >> i) & 1 ? '+' : '-';
+    classes.push_back({{"signs", signs}, {"components", s.per_class[c]}});
+  }
+  return classes;
+}
+
 json csncs_json(const AspectsResult& r) {
   int64_t kept_boxes = 0;
   for (int i = 0; i < r.filtered; ++i) kept_boxes += r.csnc_sizes[i];
@@ -69,6 +82,7 @@ json csncs_json(const AspectsResult& r) {
           {"filtered_boxes", kept_boxes},
           {"separated_lower_bound", r.separation.lower_bound},
           {"separated_representatives", r.separation.representatives},
+          {"separated_classes", separated_classes_json(r.separation, r.factors.size())},
           {"sizes", r.csnc_sizes}};
 }
 

@@ -26,6 +26,11 @@ for k in ["count", "filtered", "separated_lower_bound", "sizes"]:
     assert k in s["csncs"], k
 assert s["robot"] == "PRRP" and s["csncs"]["filtered"] == 4 and s["csncs"]["separated_lower_bound"] == 4
 assert s["factors"][0]["origin"] == "det Fx", s["factors"]
+# The bound is the sum of its classes' components, each class a sign per factor.
+cls = s["csncs"]["separated_classes"]
+assert sum(c["components"] for c in cls) == 4 and all(c["components"] > 0 for c in cls), cls
+assert all(len(c["signs"]) == len(s["factors"]) and set(c["signs"]) <= set("+-") for c in cls), cls
+assert len({c["signs"] for c in cls}) == len(cls), cls
 # Phases: each with its time and the peak memory at its end, which only grows, up to the
 # run's peak; the outputs come last.
 names = [ph["name"] for ph in s["phases"]]
