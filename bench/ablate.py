@@ -24,8 +24,13 @@ def solve(binary, args, model, eps, threads):
     if p.returncode != 0:
         sys.exit(f"ablate: {' '.join(cmd)} failed ({p.returncode}):\n{p.stderr}")
     wall, user, sys_, rss = p.stderr.strip().splitlines()[-1].split()
-    boxes = next(l for l in p.stdout.splitlines() if l.startswith("boxes:"))
-    return float(wall), float(user) + float(sys_), int(rss), boxes.split(":", 1)[1].strip()
+    line = lambda head: next(l for l in p.stdout.splitlines() if l.startswith(head))
+    boxes = line("boxes:").split(":", 1)[1].strip()
+    links = line("links:").split(":", 1)[1].strip()
+    csncs = line("CSNCs:").split(":", 1)[1].strip()
+    bound = line("separated lower bound").rsplit(":", 1)[1].strip()
+    return (float(wall), float(user) + float(sys_), int(rss), boxes,
+            f"{links}; CSNCs {csncs}; bound {bound}")
 
 
 def main():
@@ -33,6 +38,8 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--variant", action="append", required=True)
+    ap.add_argument("--counts", action="store_true",
+                    help="add a column with the links, CSNCs and the lower bound")
     ap.add_argument("cases", nargs="+")
     a = ap.parse_args()
     variants = []
@@ -41,8 +48,9 @@ def main():
         parts = spec.split(",")
         variants.append((name, parts[0], parts[1:]))
     print(f"threads {a.threads}, {a.repeat} interleaved runs per variant\n")
-    print("| robot | eps | variant | median wall s | median CPU s | boxes (solution, undecided) | peak MiB |")
-    print("|---|---|---|---|---|---|---|")
+    extra = " links; CSNCs; bound |" if a.counts else ""
+    print("| robot | eps | variant | median wall s | median CPU s | boxes (solution, undecided) | peak MiB |" + extra)
+    print("|---|---|---|---|---|---|---|" + ("---|" if a.counts else ""))
     for case in a.cases:
         robot, eps = case.rsplit(":", 1)
         model = robot if os.path.sep in robot else os.path.join(ROOT, "robots", robot + ".robot")
@@ -55,7 +63,8 @@ def main():
             print(f"| {os.path.basename(robot)} | {eps} | {name} | "
                   f"{statistics.median(x[0] for x in r):.2f} | "
                   f"{statistics.median(x[1] for x in r):.2f} | {r[0][3]} | "
-                  f"{max(x[2] for x in r) / 1024:.0f} |", flush=True)
+                  f"{max(x[2] for x in r) / 1024:.0f} |" + (f" {r[0][4]} |" if a.counts else ""),
+                  flush=True)
 
 
 if __name__ == "__main__":
