@@ -87,8 +87,15 @@ def components(mask, periodic):
         core = core[..., 1:-1]
     thick = np.zeros(n + 1, dtype=bool)
     thick[np.unique(roots[core])] = True
-    return sorted(((int(sizes[k]), bool(thick[k])) for k in range(1, n + 1) if sizes[k] > 0),
-                  reverse=True)
+    comps = sorted(((int(sizes[k]), bool(thick[k]), k) for k in range(1, n + 1) if sizes[k] > 0),
+                   reverse=True)
+    # Where the second largest lies (grid indices, the range of each axis): where a
+    # further aspect of this class would be, if it is one.
+    where = None
+    if len(comps) > 1:
+        idx = np.nonzero(roots == comps[1][2])
+        where = [(int(i.min()), int(i.max())) for i in idx]
+    return [(c, t) for c, t, _ in comps], where
 
 
 def count(n, x3_slice=None):
@@ -116,13 +123,17 @@ def count(n, x3_slice=None):
         fq_signs = tuple(seen.pop() if len(seen) == 1 else 0 for seen in fq_seen)
         for sign in (1, -1):
             mask = signs == sign
-            comps = (components(mask, True) if x3_slice is None
-                     else components(mask[:, :, 0], False))
+            comps, where = (components(mask, True) if x3_slice is None
+                            else components(mask[:, :, 0], False))
+            if where is not None:  # grid indices to pose coordinates
+                axes = [g, g, t][:len(where)]
+                where = [(float(a[i]), float(a[j])) for a, (i, j) in zip(axes, where)]
             classes.append(dict(mode=mode, fq_signs=fq_signs, det_fx=sign,
                                 sizes=[c for c, _ in comps],
                                 thick=sum(1 for _, t in comps if t),
                                 thick_sizes=[c for c, t in comps if t],
-                                volume=sum(c for c, _ in comps) * cell))
+                                volume=sum(c for c, _ in comps) * cell,
+                                second_where=where))
     return classes
 
 
