@@ -48,7 +48,11 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     if not isinstance(model, Model):
         raise TypeError(f"model must be an aspects.Model, got {type(model).__name__}")
     eps = _number("eps", eps)
+    if not (eps > 0 and eps < float("inf")):
+        raise ValueError(f"eps must be a positive number, got {eps}")
     threads = _number("threads", threads, int)
+    if not 0 <= threads <= 1024:
+        raise ValueError(f"threads must be between 0 (one per core) and 1024, got {threads}")
     time_limit = -1.0 if time_limit is None else _number("time_limit", time_limit)
     if time_limit != -1.0 and not time_limit > 0:
         raise ValueError(f"time_limit must be a positive number of seconds, got {time_limit}")

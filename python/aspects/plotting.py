@@ -312,7 +312,7 @@ def csnc_grid(bs, title, constraint=True, obstacle=None, max_panels=26, undecide
     fig.legend(handles=handles, loc="lower center", ncol=ncols_leg, fontsize=8, frameon=False)
     legend_rows = math.ceil(len(handles) / ncols_leg)
     bottom = min(0.45, (0.22 * legend_rows + 0.1) / fig.get_figheight())
-    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.5 / fig.get_figheight()))
+    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.5 / fig.get_figheight()), h_pad=1.5)
     return fig
 
 

@@ -1,6 +1,7 @@
 """aspects.Result: a solved or loaded result (the compiled aspects._aspects._Result inside)."""
 import collections
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -105,15 +106,28 @@ class Result:
     # ---------------------------------------------------------------- using it
     def query(self, pose):
         """The certified commands of a pose, as `aspects query --json` prints them."""
-        return self._core._query(_pose(pose, "pose"))
+        return self._core._query(self._pose(pose, "pose"))
 
     def path(self, start, goal, csnc=None):
         """A certified singularity-free path, as `aspects path --json` prints it
         (outcome "found" with waypoints, or why there is none)."""
         if csnc is not None and (isinstance(csnc, bool) or not isinstance(csnc, int)):
             raise TypeError("csnc must be an integer")
-        return self._core._path(_pose(start, "start"), _pose(goal, "goal"),
+        return self._core._path(self._pose(start, "start"), self._pose(goal, "goal"),
                                 -1 if csnc is None else csnc)
+
+    def _pose(self, pose, what):
+        """A pose as a list of floats, one finite number per pose variable (the C++ side
+        checks the domain, as for --pose)."""
+        values = _pose(pose, what)
+        names = self.pose_variables
+        if len(values) != len(names):
+            raise ValueError(f"{what} must have {len(names)} coordinates ({', '.join(names)}), "
+                             f"got {len(values)}")
+        for name, x in zip(names, values):
+            if not math.isfinite(x):
+                raise ValueError(f"{what}: {name} = {x} is not a finite number")
+        return values
 
     def check(self, threads=None, trust_factors=False):
         """Runs check_cert --json on the certificate in the result directory; returns its
