@@ -3,10 +3,10 @@ build/python and ASPECTS_EXE, ASPECTS_ROBOTS set).
 
 Each test compares with exact values: the command line's own outputs on the same model and
 eps (summary.json, boxes.csv, aspects.idx byte for byte, query and path --json), exact
-error positions, exact exception types. Deliberate breaks that made them fail: returning
-the undecided boxes' kind unshifted in box_arrays (status counts differ from summary.json);
-dropping the PyErr_CheckSignals poll (the SIGINT test hangs past its 1 s bound); passing
-pose text to parse_pose without the count check (wrong-length pose accepted).
+error positions, exact exception types. Deliberate breaks that made them fail: the
+undecided boxes' status left unshifted in box_arrays (py_result.cpp; three tests: the status
+counts differ from summary.json, the unexplored count), the pose length check removed from
+Result._pose (the wrong-length cases: the message is then the C++ one).
 """
 import json
 import math
