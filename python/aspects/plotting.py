@@ -329,7 +329,7 @@ def cuboid_faces(lo, hi):
     return faces
 
 
-def draw_3d(ax, bs, mask, cols, color, max_cuboids=2500, max_points=60000):
+def draw_3d(ax, bs, mask, cols, color, max_cuboids=2500, max_points=60000, alpha=0.55):
     """Cuboids when few, else the box centres (subsampled beyond max_points)."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
     idx = np.flatnonzero(mask)
@@ -337,7 +337,7 @@ def draw_3d(ax, bs, mask, cols, color, max_cuboids=2500, max_points=60000):
     if len(idx) <= max_cuboids:
         if len(idx):
             pc = Poly3DCollection(cuboid_faces(lo, hi), facecolors=color, edgecolors="k",
-                                  linewidths=0.15, alpha=0.55)
+                                  linewidths=0.15, alpha=alpha)
             ax.add_collection3d(pc)
         how = "boxes"
     else:
@@ -375,21 +375,26 @@ def csnc_3d(bs, title, path=None, largest=2):
     ctx = rng().choice(und, size=min(len(und), 15000), replace=False) if len(und) else und
     for i, (label, m, color, k) in enumerate(panels):
         ax = fig.add_subplot(1, len(panels), i + 1, projection="3d")
-        n, how = draw_3d(ax, bs, m, cols, color)
+        on_path = k is not None and k == path_csnc
+        if on_path:
+            # Drawn in call order, so the path stays visible in front of the boxes.
+            ax.computed_zorder = False
+        n, how = draw_3d(ax, bs, m, cols, color, alpha=0.2 if on_path else 0.55)
         if i > 0 and len(ctx):
             # Faint context: where the workspace is (undecided box centres, subsampled).
             c = 0.5 * (bs.lo[ctx][:, cols] + bs.hi[ctx][:, cols])
             ax.scatter(c[:, 0], c[:, 1], c[:, 2], s=0.4, c="0.5", alpha=0.15,
                        depthshade=False, linewidths=0)
-        if k is not None and k == path_csnc:
-            for a, b in path_segments(bs, path, cols):
-                ax.plot([a[0], b[0]], [a[1], b[1]], [a[2], b[2]], "-", color=PATH_COLOR, lw=1.8)
+        if on_path:
             segs = path_segments(bs, path, cols)
+            for a, b in segs:
+                ax.plot([a[0], b[0]], [a[1], b[1]], [a[2], b[2]], "-o", color=PATH_COLOR,
+                        lw=2.0, ms=2.5, zorder=10)
             if segs:
-                ax.scatter(*[[v] for v in segs[0][0]], marker="s", s=50, c="#2ca02c",
-                           edgecolors="k", depthshade=False)
-                ax.scatter(*[[v] for v in segs[-1][1]], marker="*", s=120, c="#ffdd00",
-                           edgecolors="k", depthshade=False)
+                ax.scatter(*[[v] for v in segs[0][0]], marker="s", s=60, c="#2ca02c",
+                           edgecolors="k", depthshade=False, zorder=11)
+                ax.scatter(*[[v] for v in segs[-1][1]], marker="*", s=160, c="#ffdd00",
+                           edgecolors="k", depthshade=False, zorder=11)
         ax.set_xlim(*lim[0])
         ax.set_ylim(*lim[1])
         ax.set_zlim(*lim[2])
