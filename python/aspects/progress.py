@@ -4,9 +4,9 @@ import time
 
 
 def _describe(d):
-    phase = d["phases"][-1][0] if d["phases"] else "search"
+    where = f"phase done: {d['phases'][-1][0]}" if d["phases"] else "searching"
     return (f"{d['processed']} boxes, {d['solutions']} solution, {d['undecided']} undecided, "
-            f"{100 * d['decided']:.1f}% of the domain decided (last phase done: {phase})")
+            f"{100 * d['decided']:.1f}% of the domain decided ({where})")
 
 
 class _Tqdm:

@@ -22,6 +22,7 @@
 #include "search/stop_condition.h"
 #include "solve_config.h"
 #include "solve_outputs.h"
+#include "solve_progress.h"
 #include "summary_json.h"
 
 namespace aspects::py {
@@ -141,6 +142,11 @@ void run_polling(const std::function<void()>& work, StopCondition& stop, Progres
     }
     worker.join();
   }
+  // The last state, so that even a run shorter than one poll reports its end.
+  if (!callback.is_none() && !callback_error && progress.changed && !failure) {
+    double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    callback(progress_dict(progress, t));
+  }
   if (callback_error) throw std::move(*callback_error);
   if (failure) std::rethrow_exception(failure);
 }
@@ -180,6 +186,15 @@ pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::obje
       [&] {
         set_working_precision(o.prec);  // a new thread starts at MPFR's default
         r = compute_aspects(model, cfg);
+        {
+          // The search reports now and then; its end, from the result.
+          std::lock_guard<std::mutex> lock(progress.mu);
+          progress.processed = r.processed;
+          progress.solutions = r.solutions;
+          progress.undecided = r.undecided;
+          progress.decided = decided_share(model, r);
+          progress.changed = true;
+        }
         if (!o.out_dir.empty()) write_solve_outputs(o, model, cert.get(), r);
         summary = summary_json(model, o, r);
         loaded = std::make_shared<LoadedResult>(load_result_from(

@@ -177,6 +177,39 @@ def test_progress_callback_and_its_exception():
         aspects.solve(model, eps=0.05, progress=fail)
 
 
+def test_progress_true_uses_tqdm_when_installed(monkeypatch):
+    import sys
+    import types
+    bars = []
+
+    class FakeTqdm:
+        def __init__(self, total, **kw):
+            self.total, self.n, self.closed = total, 0.0, False
+            bars.append(self)
+
+        def update(self, x):
+            self.n += x
+
+        def set_postfix_str(self, s, refresh=True):
+            self.postfix = s
+
+        def close(self):
+            self.closed = True
+    monkeypatch.setitem(sys.modules, "tqdm", types.SimpleNamespace(tqdm=FakeTqdm))
+    aspects.solve(aspects.Model.default(), eps=0.1)  # warm: the next run is the measured one
+    aspects.solve(aspects.Model.default(), eps=0.1, progress=True)
+    assert len(bars) == 1 and bars[0].closed and bars[0].total == 100
+    assert 0 < bars[0].n <= 100 and "boxes" in bars[0].postfix
+
+
+def test_progress_true_without_tqdm_prints_lines(monkeypatch, capsys):
+    import sys
+    monkeypatch.setitem(sys.modules, "tqdm", None)  # import tqdm raises ImportError
+    aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, progress=True)
+    err = capsys.readouterr().err
+    assert err.startswith("[aspects] ") and "[aspects] done: 95 boxes, 36 solution" in err
+
+
 def test_sigint_stops_within_a_second():
     model = aspects.Model.default()
     fired = []
