@@ -9,6 +9,7 @@
 #include "model/model.h"
 #include "model/model_info.h"
 #include "path_command.h"
+#include "plot_command.h"
 #include "query_command.h"
 #include "result_index.h"
 #include "solve_command.h"
@@ -23,10 +24,12 @@ struct Commands {
   CLI::App* solve = nullptr;
   CLI::App* query = nullptr;
   CLI::App* path = nullptr;
+  CLI::App* plot = nullptr;
   std::string info_model;
   SolveOptions solve_options;
   QueryOptions query_options;
   PathOptions path_options;
+  PlotOptions plot_options;
 };
 
 void add_info(CLI::App& app, Commands& c) {
@@ -102,6 +105,16 @@ void add_path(CLI::App& app, Commands& c) {
   path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
 }
 
+void add_plot(CLI::App& app, Commands& c) {
+  PlotOptions& po = c.plot_options;
+  auto* plot = c.plot = app.add_subcommand(
+      "plot", "Draw a result: CSNCs on the pose plane (2 pose variables) or in 3-D (3)");
+  plot->add_option("RESULT_DIR", po.result_dir, "directory written by `aspects solve --out`")
+      ->required();
+  plot->add_option("--out", po.out, "PNG to write (default: RESULT_DIR/aspects.png)");
+  plot->add_option("--path", po.path, "draw the path of this file (`aspects path --json` output)");
+}
+
 // The options of `solve` given on the command line: a resumed run refuses those that
 // differ from its checkpoint, and the model's `bisect` statement yields to --bisect.
 void record_given_options(Commands& c) {
@@ -119,6 +132,7 @@ int run_command(Commands& c) {
   record_given_options(c);
   if (*c.query) return run_query(c.query_options);
   if (*c.path) return run_path(c.path_options);
+  if (*c.plot) return run_plot(c.plot_options);
   return run_solve(c.solve_options);
 }
 
@@ -162,6 +176,7 @@ int main(int argc, char** argv) {
   add_solve(app, commands);
   add_query(app, commands);
   add_path(app, commands);
+  add_plot(app, commands);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

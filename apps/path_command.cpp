@@ -357,8 +357,10 @@ void print_text(const LoadedResult& r, const PathOptions& o, const std::vector<d
   }
 }
 
-void print_json(const std::vector<double>& from, const std::vector<double>& to,
-                const PathResult& p) {
+}  // namespace
+
+nlohmann::json path_json(const std::vector<double>& from, const std::vector<double>& to,
+                         const PathResult& p) {
   nlohmann::json j;
   j["csnc"] = p.csnc >= 0 ? nlohmann::json(p.csnc) : nlohmann::json(nullptr);
   j["outcome"] = path_outcome_name(p.outcome);
@@ -376,10 +378,8 @@ void print_json(const std::vector<double>& from, const std::vector<double>& to,
                               {"box", w.box}});
   if (p.outcome == PathOutcome::Found) j["length"] = p.length;
   if (!p.failure.empty()) j["failure"] = p.failure;
-  std::cout << j.dump() << '\n';
+  return j;
 }
-
-}  // namespace
 
 int run_path(const PathOptions& opts) {
   LoadedResult r = load_result(opts.result_dir);
@@ -391,11 +391,12 @@ int run_path(const PathOptions& opts) {
                      std::to_string(opts.csnc));
   ModelEvaluator ev(r.model);
   PathResult p = plan_path(r, ev, from, to, opts.csnc);
+  const nlohmann::json j = path_json(from, to, p);
   if (opts.json)
-    print_json(from, to, p);
+    std::cout << j.dump() << '\n';
   else
     print_text(r, opts, from, to, p);
-  if (!opts.plot.empty() && p.outcome == PathOutcome::Found) write_path_plot(r, p, opts.plot);
+  if (!opts.plot.empty() && p.outcome == PathOutcome::Found) write_path_plot(r, j, opts.plot);
   if (!opts.plot.empty() && p.outcome != PathOutcome::Found)
     std::cerr << "aspects: no path, so no figure written to " << opts.plot << '\n';
   return p.outcome == PathOutcome::Found ? 0 : 1;

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,10 @@ const char* path_outcome_name(PathOutcome o);
 // `csnc` = -1: the smallest-numbered (largest) CSNC holding both poses.
 PathResult plan_path(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& from,
                      const std::vector<double>& to, int csnc);
+
+// What `aspects path --json` prints: {"csnc", "outcome", "waypoints": [...], ...}.
+nlohmann::json path_json(const std::vector<double>& from, const std::vector<double>& to,
+                         const PathResult& p);
 
 // Exit code: 0 path found, 1 none, 2 usage or input error (thrown).
 int run_path(const PathOptions& opts);

@@ -135,7 +135,10 @@ void print_text(const LoadedResult& r, const std::vector<double>& pose, const Qu
       std::printf("  (box %u also contains the pose; its command could not be proved)\n", id);
 }
 
-void print_json(const std::vector<double>& pose, const QueryResult& q, const LoadedResult& r) {
+}  // namespace
+
+nlohmann::json query_json(const std::vector<double>& pose, const QueryResult& q,
+                          const LoadedResult& r) {
   nlohmann::json j;
   j["pose"] = pose;
   j["outcome"] = query_outcome_name(q.outcome);
@@ -150,10 +153,8 @@ void print_json(const std::vector<double>& pose, const QueryResult& q, const Loa
   j["unproved_boxes"] = q.unproved;
   j["undecided_boxes"] = q.undecided;
   j["membership_unknown_boxes"] = q.unknown;
-  std::cout << j.dump() << '\n';
+  return j;
 }
-
-}  // namespace
 
 int run_query(const QueryOptions& opts) {
   LoadedResult r = load_result(opts.result_dir);
@@ -161,7 +162,7 @@ int run_query(const QueryOptions& opts) {
   ModelEvaluator ev(r.model);
   QueryResult q = query_pose(r, ev, pose);
   if (opts.json)
-    print_json(pose, q, r);
+    std::cout << query_json(pose, q, r).dump() << '\n';
   else
     print_text(r, pose, q);
   return q.outcome == QueryOutcome::Answered ? 0 : 1;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,10 @@ struct BoxesAtPose {
 BoxesAtPose solution_boxes_at(const LoadedResult& r, const std::vector<double>& pose);
 
 QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& pose);
+
+// What `aspects query --json` prints: {"pose", "outcome", "answers": [...], ...}.
+nlohmann::json query_json(const std::vector<double>& pose, const QueryResult& q,
+                          const LoadedResult& r);
 
 // Exit code: 0 answered, 1 no certified command, 2 usage or input error (thrown).
 int run_query(const QueryOptions& opts);

@@ -17,6 +17,7 @@ Writes into OUTDIR (only the figures whose runs are given):
   fig9_rrrrr_collisions.png, fig10_rrrrr_joint_limit.png, fig11_rrrrr_obstacle.png
                               Figs. 9-11: constrained RRRRR CSNCs, constraint boundary blue
 """
+import importlib.util
 import json
 import os
 import re
@@ -27,14 +28,26 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
-DPI = 110
+
+def _load_plotting():
+    """python/aspects/plotting.py, the project's one plotting code (`aspects plot` draws
+    with it too), loaded by path: it needs numpy and matplotlib only, not the compiled
+    module, so these figures need no build of it."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    path = os.path.join(here, "..", "python", "aspects", "plotting.py")
+    spec = importlib.util.spec_from_file_location("aspects_plotting", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+plotting = _load_plotting()
+DPI = plotting.DPI
 RNG = np.random.default_rng(20240521)
-MAX_POLYS = 200_000          # rectangles per panel layer before subsampling
-RED = "#d62728"
-BLUE = "#1f4fd6"
+RED, BLUE = plotting.RED, plotting.BLUE
+csnc_colors, add_rects = plotting.csnc_colors, plotting.add_rects
 NAMES = {"prrp": "PRRP", "rprpr": "RPRPR", "rrrrr": "RRRRR", "3rpr": "3-RPR",
          "3rrr_star": "3-RRR*", "rrrrr_collisions": "RRRRR, link collisions",
          "rrrrr_joint_limit": "RRRRR, joint limit",
@@ -45,24 +58,27 @@ ROBOT_TO_KEY = {"PRRP": "prrp", "RPRPR": "rprpr", "RRRRR": "rrrrr", "3-RPR": "3r
 OBSTACLE = (4.5, 0.0, 1.0)
 
 
-def csnc_colors(n):
-    base = list(plt.get_cmap("tab10").colors)
-    base = [c for i, c in enumerate(base) if i != 3]          # no red: red = undecided
-    extra = [c for i, c in enumerate(plt.get_cmap("tab20b").colors)]
-    pal = base + extra
-    return [pal[i % len(pal)] for i in range(n)]
-
-
 # ------------------------------------------------------------------------------ data
-class Run:
+class Run(plotting.BoxSet):
+    """One run directory: boxes.csv read into a plotting.BoxSet (every variable)."""
+
     def __init__(self, rundir):
         self.dir = rundir
         with open(os.path.join(rundir, "summary.json")) as f:
             self.summary = json.load(f)
         self.key = self._key()
         self.name = NAMES.get(self.key, self.summary.get("robot", self.key))
-        self.eps = self.summary.get("eps")
-        self._read_boxes(os.path.join(rundir, "boxes.csv"))
+        names, lo, hi, status, csnc = self._read_boxes(os.path.join(rundir, "boxes.csv"))
+        sizes = self.summary.get("csncs", {}).get("sizes")
+        n_kept = self.summary.get("csncs", {}).get("filtered", 0)
+        pose_names = re.findall(r"^\s*pose\s+(\w+)", model_text(self), re.M) or \
+            [v for v in names if v.startswith("x")] or names[:2]
+        super().__init__(names, lo, hi, status, csnc, n_kept, robot=self.name,
+                         eps=self.summary.get("eps"),
+                         pose=[names.index(v) for v in pose_names if v in names],
+                         csnc_count=len(sizes) if sizes is not None else None)
+        if sizes is not None:
+            self.sizes = list(sizes)
 
     def _key(self):
         rec = os.path.join(self.dir, "record.txt")
@@ -78,16 +94,20 @@ class Run:
                 return base[:-6]
         return ROBOT_TO_KEY.get(self.summary.get("robot"), os.path.basename(self.dir))
 
-    def _read_boxes(self, path):
+    @staticmethod
+    def _read_boxes(path):
+        """Variable names, lower and upper ends, status codes (plotting's), CSNCs."""
         with open(path) as f:
             header = f.readline().rstrip("\n").split(",")
             assert header[:4] == ["id", "status", "csnc", "kept"], header
             assert header[-1] == "boundary", header
             vcols = header[4:-1]
-            self.vars = [c[:-3] for c in vcols[0::2]]
-            nv = len(self.vars)
-            los, his, csnc, kept, sol, bnd = [], [], [], [], [], []
-            bcode = {"": 0, "singular": 1, "constraint": 2}
+            names = [c[:-3] for c in vcols[0::2]]
+            nv = len(names)
+            los, his, csnc, status = [], [], [], []
+            code = {("solution", ""): plotting.SOLUTION,
+                    ("undecided", "constraint"): plotting.CONSTRAINT,
+                    ("unexplored", ""): plotting.UNEXPLORED}
             while True:
                 chunk = f.readlines(64 << 20)
                 if not chunk:
@@ -97,72 +117,13 @@ class Run:
                 los.append(a[:, :, 0])
                 his.append(a[:, :, 1])
                 csnc.append(np.array([int(r[2]) for r in rows], dtype=np.int64))
-                kept.append(np.array([r[3] == "1" for r in rows]))
-                sol.append(np.array([r[1] == "solution" for r in rows]))
-                bnd.append(np.array([bcode.get(r[-1], 3) for r in rows], dtype=np.int8))
+                # boxes.csv does not tell P1 from P2 failures: both are singular (red).
+                status.append(np.array([code.get((r[1], r[-1]), plotting.SINGULAR)
+                                        for r in rows], dtype=np.int8))
         cat = (lambda xs, dt: np.concatenate(xs) if xs else np.zeros(0, dtype=dt))
-        self.lo = np.concatenate(los) if los else np.zeros((0, nv))
-        self.hi = np.concatenate(his) if his else np.zeros((0, nv))
-        self.csnc = cat(csnc, np.int64)
-        self.kept = cat(kept, bool)
-        self.solution = cat(sol, bool)
-        self.boundary = cat(bnd, np.int8)
-        self.undecided = ~self.solution
-        # Undecided boxes on a constraint boundary (blue) vs. singular ones (red).
-        self.constraint_bd = self.undecided & (self.boundary == 2)
-        self.singular_bd = self.undecided & (self.boundary != 2)
-        sizes = self.summary.get("csncs", {}).get("sizes")
-        if sizes is None:
-            sizes = sorted(np.bincount(self.csnc[self.csnc >= 0]).tolist(), reverse=True)
-        self.sizes = list(sizes)
-        self.n_kept = self.summary.get("csncs", {}).get(
-            "filtered", int(len(set(self.csnc[self.kept].tolist()))))
-
-    def col(self, name):
-        return self.vars.index(name)
-
-    def workspace_axes(self):
-        """Indices of the two plotted workspace coordinates (x1, x2 or the first two)."""
-        if "x1" in self.vars and "x2" in self.vars:
-            return self.col("x1"), self.col("x2")
-        return 0, 1
-
-    def title(self):
-        return f"{self.name}, ε = {self.eps:g}"
-
-
-def rects(run, mask, ix, iy, cap=MAX_POLYS):
-    """Vertices of the (ix, iy) projections of the boxes selected by mask, subsampled."""
-    idx = np.flatnonzero(mask)
-    total = len(idx)
-    if total > cap:
-        idx = np.sort(RNG.choice(idx, size=cap, replace=False))
-    x0, x1 = run.lo[idx, ix], run.hi[idx, ix]
-    y0, y1 = run.lo[idx, iy], run.hi[idx, iy]
-    v = np.stack([np.stack([x0, y0], 1), np.stack([x1, y0], 1),
-                  np.stack([x1, y1], 1), np.stack([x0, y1], 1)], 1)
-    return v, total
-
-
-def add_rects(ax, run, mask, ix, iy, color, alpha=1.0, edge=None, lw=0.0, cap=MAX_POLYS,
-              zorder=1):
-    v, total = rects(run, mask, ix, iy, cap)
-    if len(v) == 0:
-        return 0, 0
-    pc = PolyCollection(v, facecolors=[color], edgecolors=[edge] if edge else "none",
-                        linewidths=lw, alpha=alpha, zorder=zorder)
-    ax.add_collection(pc)
-    return len(v), total
-
-
-def set_limits(ax, run, mask, ix, iy, pad=0.03):
-    if not mask.any():
-        return
-    x0, x1 = run.lo[mask, ix].min(), run.hi[mask, ix].max()
-    y0, y1 = run.lo[mask, iy].min(), run.hi[mask, iy].max()
-    dx, dy = (x1 - x0) * pad + 1e-9, (y1 - y0) * pad + 1e-9
-    ax.set_xlim(x0 - dx, x1 + dx)
-    ax.set_ylim(y0 - dy, y1 + dy)
+        lo = np.concatenate(los) if los else np.zeros((0, nv))
+        hi = np.concatenate(his) if his else np.zeros((0, nv))
+        return names, lo, hi, cat(status, np.int8), cat(csnc, np.int64)
 
 
 def save(fig, outdir, name, dpi=DPI):
@@ -290,153 +251,16 @@ def fig5(runs, outdir):
     save(fig, outdir, "fig5_csnc_sizes.png")
 
 
-# ------------------------------------------------------------------------------ Fig. 6
-def cuboid_faces(lo, hi):
-    faces = []
-    for b0, b1 in zip(lo, hi):
-        x0, y0, z0 = b0
-        x1, y1, z1 = b1
-        c = np.array([[x0, y0, z0], [x1, y0, z0], [x1, y1, z0], [x0, y1, z0],
-                      [x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]])
-        for f in ((0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (2, 3, 7, 6), (1, 2, 6, 5),
-                  (0, 3, 7, 4)):
-            faces.append(c[list(f)])
-    return faces
-
-
-def draw_3d(ax, run, mask, cols, color, max_cuboids=2500, max_points=60000):
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-    idx = np.flatnonzero(mask)
-    lo, hi = run.lo[idx][:, cols], run.hi[idx][:, cols]
-    if len(idx) <= max_cuboids:
-        pc = Poly3DCollection(cuboid_faces(lo, hi), facecolors=color, edgecolors="k",
-                              linewidths=0.15, alpha=0.55)
-        ax.add_collection3d(pc)
-        how = "boxes"
-    else:
-        sel = np.arange(len(idx))
-        if len(idx) > max_points:
-            sel = RNG.choice(len(idx), size=max_points, replace=False)
-        c = 0.5 * (lo[sel] + hi[sel])
-        ax.scatter(c[:, 0], c[:, 1], c[:, 2], s=0.3, c=[color], alpha=0.35, depthshade=False,
-                   linewidths=0)
-        how = f"box centres{' (subsampled %d)' % len(sel) if len(sel) < len(idx) else ''}"
-    return len(idx), how
-
-
+# ------------------------------------------------------------------------------ Figs. 6, 7, 9-11
 def fig6(run, outdir):
-    cols = [run.col(v) for v in ("x1", "x2", "x3")] if all(
-        v in run.vars for v in ("x1", "x2", "x3")) else [0, 1, 2]
-    fig = plt.figure(figsize=(13, 4.6))
-    ids = sorted(set(run.csnc[run.csnc >= 0].tolist()))[:2]
-    panels = [("undecided boxes", run.undecided, RED)]
-    cc = csnc_colors(2)
-    for j, k in enumerate(ids):
-        kept = bool(run.kept[run.csnc == k].any())
-        panels.append((f"CSNC {k + 1} ({'kept' if kept else 'filtered out'})",
-                       run.csnc == k, cc[j]))
-    allm = np.ones(len(run.csnc), bool)
-    lim = [(run.lo[allm, c].min(), run.hi[allm, c].max()) for c in cols]
-    und = np.flatnonzero(run.undecided)
-    ctx = RNG.choice(und, size=min(len(und), 15000), replace=False) if len(und) else und
-    for i, (label, m, color) in enumerate(panels):
-        ax = fig.add_subplot(1, 3, i + 1, projection="3d")
-        n, how = draw_3d(ax, run, m, cols, color)
-        if i > 0 and len(ctx):
-            # Faint context: where the workspace is (undecided box centres, subsampled).
-            c = 0.5 * (run.lo[ctx][:, cols] + run.hi[ctx][:, cols])
-            ax.scatter(c[:, 0], c[:, 1], c[:, 2], s=0.4, c="0.5", alpha=0.15,
-                       depthshade=False, linewidths=0)
-        ax.set_xlim(*lim[0])
-        ax.set_ylim(*lim[1])
-        ax.set_zlim(*lim[2])
-        ax.set_xlabel(run.vars[cols[0]])
-        ax.set_ylabel(run.vars[cols[1]])
-        ax.set_zlabel(run.vars[cols[2]])
-        ax.set_title(f"{label}: {n} {how}", fontsize=9)
-        ax.view_init(elev=22, azim=-60)
-    fig.suptitle(f"Fig. 6 — {run.title()}: workspace in (x1, x2, x3); undecided boxes, "
-                 f"then the two largest CSNCs", fontsize=10)
-    fig.subplots_adjust(left=0.01, right=0.97, top=0.86, bottom=0.03, wspace=0.05)
-    save(fig, outdir, "fig6_3rpr.png")
+    save(plotting.csnc_3d(run, "Fig. 6 — "), outdir, "fig6_3rpr.png")
 
 
-# ------------------------------------------------------------------------------ Figs. 7, 9-11
-def csnc_grid(run, outdir, fname, title, constraint=False, obstacle=None, max_panels=26,
+def csnc_grid(run, outdir, fname, title, constraint=False, obstacle=None,
               undecided_on_top=True):
-    """Overview (all kept CSNCs) + one panel per kept CSNC, with the undecided boxes on top
-    (so that singularity curves show across the projected CSNCs, as in the paper), or
-    beneath when they cover most of the projected workspace (coarse 3-RRR* runs)."""
-    ix, iy = run.workspace_axes()
-    kept_ids = sorted(set(run.csnc[run.kept].tolist()))
-    shown = kept_ids[:max_panels]
-    colors = csnc_colors(len(kept_ids))
-    npan = 1 + len(shown)
-    ncol = min(npan, 6 if npan > 12 else (4 if npan > 4 else npan))
-    nrow = (npan + ncol - 1) // ncol
-    side = 5.0 if npan == 1 else (3.0 if npan <= 12 else 2.5)
-    extent = np.ones(len(run.csnc), bool)
-    xr = run.hi[:, ix].max() - run.lo[:, ix].min() if len(run.csnc) else 1.0
-    yr = run.hi[:, iy].max() - run.lo[:, iy].min() if len(run.csnc) else 1.0
-    ratio = yr / xr if xr > 0 else 1.0
-    # Panel size following the data's aspect ratio, plus room for the tick labels.
-    pw, ph = (side, max(0.45 * side, side * ratio)) if ratio < 1 else \
-        (max(0.45 * side, side / ratio), side)
-    pw += 0.45
-    fig, axes = plt.subplots(nrow, ncol, figsize=(pw * ncol + 0.4, (ph + 0.45) * nrow + 0.8),
-                             squeeze=False)
-    for ax in axes.flat[npan:]:
-        ax.axis("off")
-    # Cap the undecided layers so the whole figure stays around a million rectangles.
-    und_cap = max(10_000, min(MAX_POLYS, 600_000 // npan))
-    uz = 3 if undecided_on_top else 1
-
-    def undecided_layers(ax, alpha):
-        nr = add_rects(ax, run, run.singular_bd, ix, iy, RED, alpha=alpha, cap=und_cap, zorder=uz)
-        nb = (0, 0)
-        if constraint:
-            nb = add_rects(ax, run, run.constraint_bd, ix, iy, BLUE, alpha=alpha, cap=und_cap,
-                           zorder=uz + 0.5)
-        return nr, nb
-
-    def decorate(ax):
-        set_limits(ax, run, extent, ix, iy)
-        ax.set_aspect("equal")
-        if obstacle is not None:
-            ax.add_patch(Circle(obstacle[:2], obstacle[2], color="k", zorder=6))
-        ax.tick_params(labelsize=7)
-
-    ax0 = axes.flat[0]
-    for j, k in enumerate(kept_ids):
-        add_rects(ax0, run, run.csnc == k, ix, iy, colors[j], zorder=2)
-    nr, nb = undecided_layers(ax0, 0.35)
-    decorate(ax0)
-    sub = []
-    if nr[0] < nr[1]:
-        sub.append(f"red subsampled {nr[0]}/{nr[1]}")
-    if nb[0] < nb[1]:
-        sub.append(f"blue subsampled {nb[0]}/{nb[1]}")
-    ax0.set_title(f"all {len(kept_ids)} kept CSNCs" + (f"\n({', '.join(sub)})" if sub else ""),
-                  fontsize=9)
-    ax0.set_xlabel(run.vars[ix], fontsize=8)
-    ax0.set_ylabel(run.vars[iy], fontsize=8)
-    for j, k in enumerate(shown):
-        ax = axes.flat[1 + j]
-        m = run.csnc == k
-        add_rects(ax, run, m, ix, iy, colors[j], zorder=2)
-        undecided_layers(ax, 0.5)
-        decorate(ax)
-        ax.set_title(f"CSNC {k + 1}: {int(m.sum())} boxes", fontsize=8)
-    legend = "colours: CSNCs; red: undecided (singular) boxes" + \
-        ("" if undecided_on_top else " (drawn beneath the CSNCs)")
-    if constraint:
-        legend += "; blue: constraint-boundary boxes"
-    if obstacle is not None:
-        legend += "; black disc: obstacle"
-    more = f" (first {len(shown)} of {len(kept_ids)} shown)" if len(shown) < len(kept_ids) else ""
-    fig.suptitle(f"{title} — {run.title()}: {len(kept_ids)} filtered CSNCs projected on "
-                 f"({run.vars[ix]}, {run.vars[iy]}){more}\n{legend}", fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.97 if nrow > 2 else 0.93))
+    fig = plotting.csnc_grid(run, f"{title} — ", constraint=constraint, obstacle=obstacle,
+                             undecided_on_top=undecided_on_top)
+    npan = len(fig.axes)
     save(fig, outdir, fname, dpi=DPI if npan <= 12 else 85)
 
 

@@ -1,0 +1,88 @@
+"""Certified generalized aspects of parallel robots, from Python.
+
+    import aspects
+    model = aspects.Model.from_file("robots/prrp.robot")
+    result = aspects.solve(model, eps=0.1)
+    result.summary["csncs"]["count"], result.lower_bound
+    result.query([0.5]); result.path([0.2], [0.8]); result.plot("prrp.png")
+
+The computation is the command line's (`aspects solve`), in the compiled module
+`aspects._aspects`; this package adds the progress display, the Result class and the
+figures (aspects.plotting, shared with `aspects plot`).
+"""
+import os as _os
+
+from ._aspects import (  # noqa: F401
+    Model, ModelError, ResultError,
+    SOLUTION, UNDECIDED_NO_EXISTENCE, UNDECIDED_SINGULAR, UNDECIDED_CONSTRAINT, UNEXPLORED,
+)
+from . import _aspects
+from .progress import progress_callback as _progress_callback
+from .result import Result
+
+__all__ = ["Model", "ModelError", "ResultError", "Result", "solve", "load"]
+
+
+def _number(name, value, kind=float):
+    if isinstance(value, bool) or not isinstance(value, (int, float) if kind is float else int):
+        raise TypeError(f"{name} must be {'a number' if kind is float else 'an integer'}, "
+                        f"got {type(value).__name__}")
+    return kind(value)
+
+
+def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *,
+          max_boxes=None, prec=53, tau=1.01, all_links=False, bisect=None, certificate=True,
+          compress_certificate=False):
+    """Solve `model` (an aspects.Model) as `aspects solve` does; returns a Result.
+
+    threads: 0 is one per core (the result does not depend on it). time_limit (seconds)
+    and max_boxes stop the search early: the result is then partial (result.complete is
+    False) and every claim still holds. Ctrl-C does the same: the run stops within a
+    second and the partial result is returned (with a warning). out: a directory, written
+    as `aspects solve --out` writes it (summary.json, boxes.csv, aspects.cert,
+    aspects.idx; certificate=False leaves out the certificate). progress: None (quiet),
+    True (tqdm when installed, else a line on stderr now and then), or a callable given a
+    dict (processed, solutions, undecided, decided share, seconds, phases) about every
+    0.1 s; an exception it raises stops the run and is raised here.
+    """
+    if not isinstance(model, Model):
+        raise TypeError(f"model must be an aspects.Model, got {type(model).__name__}")
+    eps = _number("eps", eps)
+    if not (eps > 0 and eps < float("inf")):
+        raise ValueError(f"eps must be a positive number, got {eps}")
+    threads = _number("threads", threads, int)
+    if not 0 <= threads <= 1024:
+        raise ValueError(f"threads must be between 0 (one per core) and 1024, got {threads}")
+    time_limit = -1.0 if time_limit is None else _number("time_limit", time_limit)
+    if time_limit != -1.0 and not time_limit > 0:
+        raise ValueError(f"time_limit must be a positive number of seconds, got {time_limit}")
+    max_boxes = -1 if max_boxes is None else _number("max_boxes", max_boxes, int)
+    if max_boxes != -1 and max_boxes < 1:
+        raise ValueError(f"max_boxes must be at least 1, got {max_boxes}")
+    if bisect is not None and not isinstance(bisect, str):
+        raise TypeError("bisect must be a string")
+    out = "" if out is None else _os.fspath(out)
+    callback, finish = _progress_callback(progress)
+    try:
+        core, interrupted = _aspects._solve(
+            model, eps, threads, time_limit, max_boxes, _number("prec", prec, int),
+            _number("tau", tau), bool(all_links), bisect or "", out, bool(certificate),
+            bool(compress_certificate), callback)
+    finally:
+        finish()
+    result = Result(core)
+    if interrupted:
+        import warnings
+        warnings.warn("aspects.solve: interrupted (Ctrl-C); returning the partial result "
+                      "(result.complete is False; every claim holds)", RuntimeWarning,
+                      stacklevel=2)
+    return result
+
+
+def load(directory):
+    """The result that `aspects solve --out DIRECTORY` (or solve(out=...)) wrote, read
+    from its aspects.idx (boxes.csv is not read). ResultError when it is not one."""
+    directory = _os.fspath(directory)
+    if not _os.path.isdir(directory):
+        raise ResultError(f"{directory}: not a directory (give what `aspects solve --out` wrote)")
+    return Result(_aspects._load(directory))

@@ -1,0 +1,186 @@
+"""aspects.Result: a solved or loaded result (the compiled aspects._aspects._Result inside)."""
+import collections
+import json
+import math
+import os
+import shutil
+import subprocess
+
+CSNC = collections.namedtuple("CSNC", "id size kept signs")
+CSNC.__doc__ = ("A CSNC: its number (by decreasing size), its boxes, whether the size-ratio "
+                "filter keeps it (a heuristic), the signs of the determinant factors on it.")
+
+
+def _check_cert_program():
+    """check_cert: $ASPECTS_CHECK_CERT, the build tree's, the installed one (P/bin for a
+    package in P/lib/python3/dist-packages), else the one on PATH."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    for p in (os.environ.get("ASPECTS_CHECK_CERT"),
+              os.path.join(here, "..", "..", "certificates", "check_cert"),
+              os.path.join(here, "..", "..", "..", "..", "bin", "check_cert"),
+              shutil.which("check_cert")):
+        if p and os.path.isfile(p) and os.access(p, os.X_OK):
+            return os.path.normpath(p)
+    raise FileNotFoundError("check_cert not found (build it, install it, or set "
+                            "ASPECTS_CHECK_CERT)")
+
+
+class Result:
+    """What `aspects solve` computed. The claims are those of README "What each command
+    claims": solution boxes, links, CSNCs and the bound are certified (check() re-verifies
+    the certificate); the filter is a heuristic."""
+
+    def __init__(self, core):
+        self._core = core
+        self._arrays = None
+
+    def __repr__(self):
+        state = "complete" if self.complete else f"partial (stopped by {self.stopped_by})"
+        return (f"<aspects.Result {self.robot} eps={self.eps:g}: {len(self.ids)} boxes, "
+                f"{self._core.csnc_count} CSNCs, lower bound {self.lower_bound}, {state}>")
+
+    # ---------------------------------------------------------------- about the run
+    robot = property(lambda self: self._core.robot)
+    eps = property(lambda self: self._core.eps)
+    variables = property(lambda self: self._core.variables, doc="model order")
+    pose_variables = property(lambda self: self._core.pose_variables, doc="pose order")
+    directory = property(lambda self: self._core.directory or None,
+                         doc="the result directory (None: solved without out=)")
+    model_source = property(lambda self: self._core.model_source)
+    factors = property(lambda self: self._core.factors,
+                       doc="(origin, expression) of each determinant factor")
+
+    @property
+    def summary(self):
+        """summary.json as a dict (None for a loaded directory that has none)."""
+        return self._core.summary
+
+    @property
+    def complete(self):
+        s = self.summary
+        return True if s is None else bool(s.get("complete", True))
+
+    @property
+    def stopped_by(self):
+        s = self.summary
+        return None if s is None else s.get("stopped_by")
+
+    @property
+    def lower_bound(self):
+        """The certified lower bound on the number of aspects (separation, paper 4.4.2)."""
+        s = self.summary
+        return None if s is None else s["csncs"]["separated_lower_bound"]
+
+    # ---------------------------------------------------------------- boxes
+    def _a(self, key):
+        if self._arrays is None:
+            self._arrays = self._core._arrays()
+            for a in self._arrays.values():
+                a.setflags(write=False)
+        return self._arrays[key]
+
+    ids = property(lambda self: self._a("id"), doc="box ids (as in boxes.csv), increasing")
+    lower = property(lambda self: self._a("lower"),
+                     doc="lower ends, one column per variable (model order); an undecided "
+                         "box's command columns are NaN (aspects.idx keeps its pose part)")
+    upper = property(lambda self: self._a("upper"), doc="upper ends, as lower")
+    status = property(lambda self: self._a("status"),
+                      doc="aspects.SOLUTION, UNDECIDED_NO_EXISTENCE, UNDECIDED_SINGULAR, "
+                          "UNDECIDED_CONSTRAINT or UNEXPLORED")
+    csnc = property(lambda self: self._a("csnc"), doc="CSNC of each box, -1 when undecided")
+
+    @property
+    def csncs(self):
+        """Every CSNC, largest first."""
+        import numpy as np
+        sizes = np.bincount(self.csnc[self.csnc >= 0], minlength=self._core.csnc_count)
+        signs = self._core._csnc_signs()
+        n = self._core.filtered_count
+        return [CSNC(k, int(sizes[k]), k < n, tuple(signs[k])) for k in range(len(sizes))]
+
+    @property
+    def filtered_csncs(self):
+        """The CSNCs the paper's size-ratio filter keeps (a heuristic, never certified)."""
+        return [c for c in self.csncs if c.kept]
+
+    # ---------------------------------------------------------------- using it
+    def query(self, pose):
+        """The certified commands of a pose, as `aspects query --json` prints them."""
+        return self._core._query(self._pose(pose, "pose"))
+
+    def path(self, start, goal, csnc=None):
+        """A certified singularity-free path, as `aspects path --json` prints it
+        (outcome "found" with waypoints, or why there is none)."""
+        if csnc is not None and (isinstance(csnc, bool) or not isinstance(csnc, int)):
+            raise TypeError("csnc must be an integer")
+        return self._core._path(self._pose(start, "start"), self._pose(goal, "goal"),
+                                -1 if csnc is None else csnc)
+
+    def _pose(self, pose, what):
+        """A pose as a list of floats, one finite number per pose variable (the C++ side
+        checks the domain, as for --pose)."""
+        values = _pose(pose, what)
+        names = self.pose_variables
+        if len(values) != len(names):
+            raise ValueError(f"{what} must have {len(names)} coordinates ({', '.join(names)}), "
+                             f"got {len(values)}")
+        for name, x in zip(names, values):
+            if not math.isfinite(x):
+                raise ValueError(f"{what}: {name} = {x} is not a finite number")
+        return values
+
+    def check(self, threads=None, trust_factors=False):
+        """Runs check_cert --json on the certificate in the result directory; returns its
+        verdict (a dict: "verdict" VERIFIED, UNCHECKED or a failure, and the counts)."""
+        if not self.directory:
+            raise ValueError("no certificate: solve with out=DIR (or load a directory)")
+        cert = next((os.path.join(self.directory, f) for f in ("aspects.cert", "aspects.cert.zst")
+                     if os.path.isfile(os.path.join(self.directory, f))), None)
+        if cert is None:
+            raise ValueError(f"{self.directory}: no aspects.cert (solved with certificate=False?)")
+        cmd = [_check_cert_program(), "--json", cert]
+        if threads is not None:
+            cmd += ["--threads", str(int(threads))]
+        if trust_factors:
+            cmd.append("--trust-factors")
+        run = subprocess.run(cmd, capture_output=True, text=True)
+        try:
+            verdict = json.loads(run.stdout)
+        except ValueError:
+            raise RuntimeError(f"check_cert gave no JSON (exit {run.returncode}): "
+                               f"{run.stderr.strip()}") from None
+        return verdict
+
+    def plot(self, out=None, path=None, title=""):
+        """The figure of `aspects plot` (aspects.plotting): 2 pose variables, the CSNCs on
+        the pose plane; 3, in 3-D. `path`: a dict from path() or a file of `aspects path
+        --json` output. Saved to `out` when given; returns the matplotlib Figure."""
+        from . import plotting
+        if isinstance(path, (str, os.PathLike)):
+            with open(path) as f:
+                path = json.load(f)
+        if path is not None and not isinstance(path, dict):
+            raise TypeError("path must be a dict from Result.path() or a file name")
+        cols = [self.variables.index(v) for v in self.pose_variables]
+        bs = plotting.BoxSet(self.pose_variables, self.lower[:, cols], self.upper[:, cols],
+                             self.status, self.csnc, self._core.filtered_count, robot=self.robot,
+                             eps=self.eps, periodic=self._core.pose_periodic,
+                             csnc_count=self._core.csnc_count)
+        return plotting.plot(bs, out=None if out is None else os.fspath(out), path=path,
+                             title=title)
+
+
+def _pose(pose, what):
+    """A pose as a list of floats; numbers only (a string is not a pose)."""
+    if isinstance(pose, (str, bytes)):
+        raise TypeError(f"{what} must be a sequence of numbers, got {type(pose).__name__}")
+    try:
+        values = list(pose)
+    except TypeError:
+        raise TypeError(f"{what} must be a sequence of numbers, got "
+                        f"{type(pose).__name__}") from None
+    for x in values:
+        if isinstance(x, bool) or not isinstance(x, (int, float)) and not hasattr(x, "__float__"):
+            raise TypeError(f"{what} must be a sequence of numbers, got an element "
+                            f"{type(x).__name__}")
+    return [float(x) for x in values]

@@ -1,0 +1,37 @@
+// The module's exceptions: a model error carries FILE:LINE:COL (as the command line prints
+// it) and its parts as attributes; a bad result directory and a bad argument are
+// ValueErrors with the command line's message.
+#include "model/model.h"
+#include "py_common.h"
+#include "result_index.h"
+#include "solve_command.h"
+
+namespace aspects::py {
+
+void bind_errors(pyb::module_& m) {
+  static pyb::exception<ModelError> model_error(m, "ModelError", PyExc_ValueError);
+  static pyb::exception<IndexError> result_error(m, "ResultError", PyExc_ValueError);
+  pyb::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const ModelError& e) {
+      // what() is "FILE:LINE:COL: error: MESSAGE"; the file is what precedes the rest.
+      const std::string what = e.what();
+      const std::string tail = ":" + std::to_string(e.line()) + ":" + std::to_string(e.col()) +
+                               ": error: " + e.message();
+      pyb::object err = pyb::reinterpret_borrow<pyb::object>(model_error.ptr())(what);
+      err.attr("file") = what.size() >= tail.size() ? what.substr(0, what.size() - tail.size())
+                                                    : std::string();
+      err.attr("line") = e.line();
+      err.attr("col") = e.col();
+      err.attr("message") = e.message();
+      PyErr_SetObject(model_error.ptr(), err.ptr());
+    } catch (const IndexError& e) {
+      result_error(e.what());
+    } catch (const UsageError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+}
+
+}  // namespace aspects::py

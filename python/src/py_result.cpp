@@ -1,0 +1,182 @@
+// aspects.Result (the compiled part; python/aspects/result.py adds the rest): the boxes as
+// numpy arrays, the summary, and `query` and `path` as `aspects query|path --json` answer
+// them, through the same code (apps/query_command.h, apps/path_command.h).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+
+#include "model/model_eval.h"
+#include "path_command.h"
+#include "pose.h"
+#include "py_common.h"
+#include "query_command.h"
+#include "result_index.h"
+#include "search/output_boxes.h"
+#include "solve_command.h"
+
+namespace aspects::py {
+
+namespace {
+
+// Box status codes of Result.status (aspects.SOLUTION, ...): an undecided box's kind as
+// the index records it, shifted by one.
+constexpr int8_t kSolution = 0;
+
+// A pose from Python, checked as `--pose` is (count, finite, domain): the numbers are
+// printed with 17 digits, which parse back to the same doubles.
+std::vector<double> checked_pose(const LoadedResult& r, const std::vector<double>& pose,
+                                 const std::string& what) {
+  std::string text;
+  for (double x : pose) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    text += (text.empty() ? "" : ",") + std::string(buf);
+  }
+  if (pose.empty())
+    throw UsageError(what + ": give " + std::to_string(r.model.pose.size()) + " numbers");
+  return parse_pose(text, what, r.model);
+}
+
+// Every box by increasing id: id, lower and upper ends (model order; an undecided box's
+// command ends are NaN, the index keeps only its pose part), status, CSNC.
+pyb::dict box_arrays(const PyResult& p) {
+  const LoadedResult& r = *p.loaded;
+  const size_t ns = r.index.solutions.size(), nu = r.index.undecided.size();
+  const size_t n = ns + nu, nv = r.index.nv;
+  pyb::array_t<uint32_t> id(n);
+  pyb::array_t<double> lo({n, nv}), hi({n, nv});
+  pyb::array_t<int8_t> status(n);
+  pyb::array_t<int32_t> csnc(n);
+  auto idv = id.mutable_unchecked<1>();
+  auto lov = lo.mutable_unchecked<2>();
+  auto hiv = hi.mutable_unchecked<2>();
+  auto stv = status.mutable_unchecked<1>();
+  auto csv = csnc.mutable_unchecked<1>();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  size_t i = 0, j = 0, row = 0;
+  while (i < ns || j < nu) {
+    const bool sol = j >= nu || (i < ns && r.index.solutions[i].id < r.index.undecided[j].id);
+    if (sol) {
+      const IndexSolutionBox& s = r.index.solutions[i++];
+      idv(row) = s.id;
+      for (size_t v = 0; v < nv; ++v) lov(row, v) = s.lo[v], hiv(row, v) = s.hi[v];
+      stv(row) = kSolution;
+      csv(row) = s.csnc;
+    } else {
+      const IndexUndecidedBox& u = r.index.undecided[j++];
+      idv(row) = u.id;
+      for (size_t v = 0; v < nv; ++v) lov(row, v) = nan, hiv(row, v) = nan;
+      for (size_t k = 0; k < r.model.pose.size(); ++k) {
+        lov(row, r.model.pose[k]) = u.lo[k];
+        hiv(row, r.model.pose[k]) = u.hi[k];
+      }
+      stv(row) = int8_t(1 + u.kind);
+      csv(row) = -1;
+    }
+    ++row;
+  }
+  pyb::dict d;
+  d["id"] = id;
+  d["lower"] = lo;
+  d["upper"] = hi;
+  d["status"] = status;
+  d["csnc"] = csnc;
+  return d;
+}
+
+// Per CSNC: its signs of the determinant factors (constant on a CSNC; from its first box).
+std::vector<std::vector<int>> csnc_signs(const LoadedResult& r) {
+  std::vector<std::vector<int>> signs(r.index.csnc_count);
+  for (const IndexSolutionBox& s : r.index.solutions)
+    if (signs[s.csnc].empty()) signs[s.csnc].assign(s.signs.begin(), s.signs.end());
+  return signs;
+}
+
+}  // namespace
+
+void bind_result(pyb::module_& m) {
+  m.attr("SOLUTION") = int(kSolution);
+  m.attr("UNDECIDED_NO_EXISTENCE") = 1 + int(UndecidedKind::NoExistence);
+  m.attr("UNDECIDED_SINGULAR") = 1 + int(UndecidedKind::Singular);
+  m.attr("UNDECIDED_CONSTRAINT") = 1 + int(UndecidedKind::Constraint);
+  m.attr("UNEXPLORED") = 1 + int(UndecidedKind::Unexplored);
+  pyb::class_<PyResult>(m, "_Result")
+      .def_property_readonly("summary", [](const PyResult& p) { return to_python(p.summary); })
+      .def_property_readonly("directory", [](const PyResult& p) { return p.dir; })
+      .def_property_readonly("model_source",
+                             [](const PyResult& p) { return p.loaded->index.model_source; })
+      .def_property_readonly("model_file",
+                             [](const PyResult& p) { return p.loaded->index.model_file; })
+      .def_property_readonly("robot", [](const PyResult& p) { return p.loaded->model.name; })
+      .def_property_readonly("eps", [](const PyResult& p) { return p.loaded->index.eps; })
+      .def_property_readonly("variables",
+                             [](const PyResult& p) { return p.loaded->model.var_names(); })
+      .def_property_readonly("pose_variables",
+                             [](const PyResult& p) {
+                               std::vector<std::string> n;
+                               for (int v : p.loaded->model.pose)
+                                 n.push_back(p.loaded->model.vars[v].name);
+                               return n;
+                             })
+      .def_property_readonly("pose_periodic",
+                             [](const PyResult& p) { return p.loaded->pose_periodic; })
+      .def_property_readonly("csnc_count",
+                             [](const PyResult& p) { return p.loaded->index.csnc_count; })
+      .def_property_readonly("filtered_count",
+                             [](const PyResult& p) { return p.loaded->index.filtered; })
+      .def_property_readonly("factors",
+                             [](const PyResult& p) {
+                               std::vector<std::pair<std::string, std::string>> f;
+                               for (auto& x : p.loaded->index.factors)
+                                 f.emplace_back(x.origin, x.text);
+                               return f;
+                             })
+      .def_property_readonly("link_count",
+                             [](const PyResult& p) { return p.loaded->index.links.size(); })
+      .def("_csnc_signs", [](const PyResult& p) { return csnc_signs(*p.loaded); })
+      .def("_arrays", &box_arrays)
+      .def("_query",
+           [](const PyResult& p, const std::vector<double>& pose) {
+             const LoadedResult& r = *p.loaded;
+             std::vector<double> x = checked_pose(r, pose, "pose");
+             ModelEvaluator ev(r.model);
+             return to_python(query_json(x, query_pose(r, ev, x), r));
+           },
+           pyb::arg("pose"))
+      .def("_path",
+           [](const PyResult& p, const std::vector<double>& a, const std::vector<double>& b,
+              int csnc) {
+             const LoadedResult& r = *p.loaded;
+             std::vector<double> from = checked_pose(r, a, "start");
+             std::vector<double> to = checked_pose(r, b, "goal");
+             if (csnc < -1 || (csnc >= 0 && uint32_t(csnc) >= r.index.csnc_count))
+               throw UsageError("csnc must be between 0 and " +
+                                std::to_string(int(r.index.csnc_count) - 1) + ", got " +
+                                std::to_string(csnc));
+             ModelEvaluator ev(r.model);
+             return to_python(path_json(from, to, plan_path(r, ev, from, to, csnc)));
+           },
+           pyb::arg("start"), pyb::arg("goal"), pyb::arg("csnc") = -1);
+  m.def(
+      "_load",
+      [](const std::string& dir) {
+        auto loaded = std::make_shared<LoadedResult>(load_result(dir));
+        nlohmann::json summary;
+        std::ifstream in(dir + "/summary.json");
+        if (in) {
+          try {
+            summary = nlohmann::json::parse(in);
+          } catch (const nlohmann::json::exception& e) {
+            throw IndexError(dir + "/summary.json: not JSON (" + e.what() + ")");
+          }
+        }
+        return PyResult{loaded, summary, dir};
+      },
+      pyb::arg("directory"), "Read DIR/aspects.idx (and summary.json when present)");
+}
+
+}  // namespace aspects::py

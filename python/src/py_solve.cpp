@@ -1,0 +1,239 @@
+// aspects._solve: the run of `aspects solve`, on a worker thread with the GIL released.
+// The calling (main) thread polls every 100 ms: it runs Python's signal handlers
+// (PyErr_CheckSignals), so Ctrl-C asks the run's StopCondition to stop, as SIGINT does on
+// the command line, and the run returns a partial result whose claims all hold; it also
+// hands the search's progress to the Python callback. With `out`, the same files as
+// `aspects solve --out` are written by the same writers (apps/solve_outputs.h).
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "certificate_writer.h"
+#include "generalized_aspects.h"
+#include "numerics/interval.h"
+#include "py_common.h"
+#include "py_model.h"
+#include "result_index.h"
+#include "search/stop_condition.h"
+#include "solve_config.h"
+#include "solve_outputs.h"
+#include "solve_progress.h"
+#include "summary_json.h"
+
+namespace aspects::py {
+
+namespace {
+
+// What the worker reports, read by the polling thread.
+struct Progress {
+  std::mutex mu;
+  long processed = 0, solutions = 0, undecided = 0;
+  double decided = 0;
+  std::vector<std::pair<std::string, double>> phases;
+  bool changed = false;
+};
+
+struct SolveRequest {
+  double eps = 0.1, tau = 1.01, time_limit = -1;
+  long prec = 53, max_boxes = -1;
+  int threads = 0;
+  bool all_links = false, certificate = true, compress_certificate = false;
+  std::string bisect, out;
+};
+
+SolveOptions options_of(const PyModel& pm, const SolveRequest& q) {
+  SolveOptions o;
+  o.model_path = pm.file;
+  o.eps = q.eps;
+  o.tau = q.tau;
+  o.prec = q.prec;
+  o.threads = q.threads;
+  o.time_limit = q.time_limit;
+  o.max_boxes = q.max_boxes;
+  o.all_links = q.all_links;
+  o.no_cert = !q.certificate;
+  o.compress_cert = q.compress_certificate;
+  o.out_dir = q.out;
+  o.quiet = true;
+  if (!q.bisect.empty()) {
+    if (std::find(std::begin(kBisectNames), std::end(kBisectNames), q.bisect) ==
+        std::end(kBisectNames))
+      throw UsageError("bisect must be round-robin, pose-first or verdict (got '" + q.bisect +
+                       "')");
+    o.bisect = q.bisect;
+    o.given.push_back("--bisect");
+  }
+  validate_solve_options(o);
+  if (o.compress_cert && o.no_cert)
+    throw UsageError("compress_certificate needs certificate=True");
+  complete_options(o);
+  return o;
+}
+
+pyb::dict progress_dict(Progress& p, double seconds) {
+  std::lock_guard<std::mutex> lock(p.mu);
+  pyb::dict d;
+  d["processed"] = p.processed;
+  d["solutions"] = p.solutions;
+  d["undecided"] = p.undecided;
+  d["decided"] = p.decided;
+  d["seconds"] = seconds;
+  pyb::list phases;
+  for (auto& [name, s] : p.phases) phases.append(pyb::make_tuple(name, s));
+  d["phases"] = phases;
+  p.changed = false;
+  return d;
+}
+
+// Runs `work` on a worker thread while this thread, holding the GIL between waits, runs
+// signal handlers and the progress callback. A KeyboardInterrupt or an exception of the
+// callback asks `stop` to stop; the callback's exception is raised once the run ended.
+void run_polling(const std::function<void()>& work, StopCondition& stop, Progress& progress,
+                 const pyb::object& callback, bool& interrupted) {
+  std::mutex mu;
+  std::condition_variable cv;
+  bool done = false;
+  std::exception_ptr failure;
+  std::unique_ptr<pyb::error_already_set> callback_error;
+  const auto start = std::chrono::steady_clock::now();
+  {
+    pyb::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        work();
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      std::lock_guard<std::mutex> lock(mu);
+      done = true;
+      cv.notify_all();
+    });
+    for (;;) {
+      {
+        std::unique_lock<std::mutex> lock(mu);
+        if (cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
+      }
+      pyb::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) {
+        // Only KeyboardInterrupt is swallowed: it becomes the stop a SIGINT is on the
+        // command line. Another handler's exception stops the run and is raised after.
+        if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
+          PyErr_Clear();
+          interrupted = true;
+        } else if (!callback_error) {
+          callback_error = std::make_unique<pyb::error_already_set>();
+        }
+        stop.request(StopReason::Signal);
+      }
+      if (!callback.is_none() && !callback_error && progress.changed) {
+        double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        try {
+          callback(progress_dict(progress, t));
+        } catch (pyb::error_already_set& e) {
+          callback_error = std::make_unique<pyb::error_already_set>(std::move(e));
+          stop.request(StopReason::Signal);
+        }
+      }
+    }
+    worker.join();
+  }
+  // The last state, so that even a run shorter than one poll reports its end.
+  if (!callback.is_none() && !callback_error && progress.changed && !failure) {
+    double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    callback(progress_dict(progress, t));
+  }
+  if (callback_error) throw std::move(*callback_error);
+  if (failure) std::rethrow_exception(failure);
+}
+
+pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::object& callback) {
+  SolveOptions o = options_of(pm, request);
+  set_arithmetic(o);  // this thread's precision: the model's intervals are made here
+  Model model = parse_model(pm.source, pm.file);
+  choose_bisect(o, model);
+  AspectsConfig cfg = engine_config(o);
+  StopCondition stop;
+  if (o.time_limit > 0) stop.set_time_limit(o.time_limit);
+  if (o.max_boxes > 0) stop.set_max_boxes(o.max_boxes);
+  cfg.stop = &stop;
+  Progress progress;
+  cfg.progress = [&progress](const SearchStats& s) {
+    std::lock_guard<std::mutex> lock(progress.mu);
+    progress.processed = s.processed;
+    progress.solutions = s.solutions;
+    progress.undecided = s.undecided;
+    progress.decided = s.resumed_share + s.decided.load();
+    progress.changed = true;
+  };
+  cfg.phase_done = [&progress](const std::string& phase, double seconds) {
+    std::lock_guard<std::mutex> lock(progress.mu);
+    progress.phases.emplace_back(phase, seconds);
+    progress.changed = true;
+  };
+  std::unique_ptr<CertificateWriter> cert = open_outputs(o, model);
+  cfg.certificate = cert.get();
+
+  AspectsResult r;
+  std::shared_ptr<LoadedResult> loaded;
+  nlohmann::json summary;
+  bool interrupted = false;
+  run_polling(
+      [&] {
+        set_working_precision(o.prec);  // a new thread starts at MPFR's default
+        r = compute_aspects(model, cfg);
+        {
+          // The search reports now and then; its end, from the result.
+          std::lock_guard<std::mutex> lock(progress.mu);
+          progress.processed = r.processed;
+          progress.solutions = r.solutions;
+          progress.undecided = r.undecided;
+          progress.decided = decided_share(model, r);
+          progress.changed = true;
+        }
+        if (!o.out_dir.empty()) write_solve_outputs(o, model, cert.get(), r);
+        summary = summary_json(model, o, r);
+        loaded = std::make_shared<LoadedResult>(load_result_from(
+            build_result_index(model, r, o.prec, o.tau, o.eps, pm.file), pm.file));
+      },
+      stop, progress, callback, interrupted);
+  set_working_precision(o.prec);  // as load_result does on the thread that queries
+  PyResult result{loaded, summary, o.out_dir};
+  return pyb::make_tuple(pyb::cast(std::move(result)), interrupted);
+}
+
+}  // namespace
+
+void bind_solve(pyb::module_& m) {
+  m.def(
+      "_solve",
+      [](const PyModel& model, double eps, int threads, double time_limit, long max_boxes,
+         long prec, double tau, bool all_links, const std::string& bisect,
+         const std::string& out, bool certificate, bool compress_certificate,
+         const pyb::object& progress) {
+        SolveRequest q;
+        q.eps = eps;
+        q.threads = threads;
+        q.time_limit = time_limit;
+        q.max_boxes = max_boxes;
+        q.prec = prec;
+        q.tau = tau;
+        q.all_links = all_links;
+        q.bisect = bisect;
+        q.out = out;
+        q.certificate = certificate;
+        q.compress_certificate = compress_certificate;
+        return solve(model, q, progress);
+      },
+      pyb::arg("model"), pyb::arg("eps"), pyb::arg("threads"), pyb::arg("time_limit"),
+      pyb::arg("max_boxes"), pyb::arg("prec"), pyb::arg("tau"), pyb::arg("all_links"),
+      pyb::arg("bisect"), pyb::arg("out"), pyb::arg("certificate"),
+      pyb::arg("compress_certificate"), pyb::arg("progress"),
+      "Solve; returns (Result, interrupted). Use aspects.solve, which wraps it.");
+}
+
+}  // namespace aspects::py

@@ -1,0 +1,335 @@
+"""Tests of the Python module `aspects` (run by ctest as python.pytest, with PYTHONPATH on
+build/python and ASPECTS_EXE, ASPECTS_ROBOTS set).
+
+Each test compares with exact values: the command line's own outputs on the same model and
+eps (summary.json, boxes.csv, aspects.idx byte for byte, query and path --json), exact
+error positions, exact exception types. Deliberate breaks that made them fail: the
+undecided boxes' status left unshifted in box_arrays (py_result.cpp; three tests: the status
+counts differ from summary.json, the unexplored count), the pose length check removed from
+Result._pose (the wrong-length cases: the message is then the C++ one).
+"""
+import json
+import math
+import os
+import signal
+import subprocess
+import threading
+import time
+import warnings
+
+import numpy as np
+import pytest
+
+import aspects
+
+EXE = os.environ["ASPECTS_EXE"]
+ROBOTS = os.environ["ASPECTS_ROBOTS"]
+PRRP = os.path.join(ROBOTS, "prrp.robot")
+RPRPR = os.path.join(ROBOTS, "rprpr.robot")
+
+
+def cli(*args, check=True):
+    run = subprocess.run([EXE, *args], capture_output=True, text=True)
+    if check and run.returncode != 0:
+        raise AssertionError(f"{args}: exit {run.returncode}: {run.stderr}")
+    return run
+
+
+@pytest.fixture(scope="module")
+def rprpr(tmp_path_factory):
+    """RPRPR at eps 0.2 solved by the command line and by Python, both with --out."""
+    base = tmp_path_factory.mktemp("rprpr")
+    cli_dir, py_dir = str(base / "cli"), str(base / "py")
+    cli("solve", RPRPR, "--eps", "0.2", "--out", cli_dir, "--quiet")
+    model = aspects.Model.from_file(RPRPR)
+    result = aspects.solve(model, eps=0.2, out=py_dir)
+    with open(os.path.join(cli_dir, "summary.json")) as f:
+        summary = json.load(f)
+    return cli_dir, py_dir, result, summary
+
+
+# ------------------------------------------------------------------------------ Model
+def test_model_from_file_names():
+    m = aspects.Model.from_file(RPRPR)
+    assert m.name == "RPRPR"
+    assert m.pose == ["x1", "x2"] and m.command == ["q1", "q2"]
+    assert m.file == RPRPR
+
+
+def test_model_error_carries_file_line_col():
+    text = "robot X\npose x in [0, 1]\ncommand q in [0, 1]\nequation x + q * = 1\n"
+    with pytest.raises(aspects.ModelError) as e:
+        aspects.Model.from_string(text, "bad.robot")
+    assert str(e.value) == "bad.robot:4:18: error: expected an expression, found '='"
+    assert (e.value.file, e.value.line, e.value.col) == ("bad.robot", 4, 18)
+    assert isinstance(e.value, ValueError)
+
+
+def test_model_missing_file():
+    with pytest.raises(aspects.ModelError, match=r"^/nonexistent/x\.robot:0:0: error: "):
+        aspects.Model.from_file("/nonexistent/x.robot")
+
+
+def test_model_wrong_type():
+    with pytest.raises(TypeError):
+        aspects.Model.from_string(42)
+
+
+# ------------------------------------------------------------------------------ solve
+def test_solve_counts_equal_the_command_line(rprpr):
+    _, _, r, s = rprpr
+    assert r.summary["boxes"] == s["boxes"]
+    assert r.summary["csncs"]["count"] == s["csncs"]["count"]
+    assert r.summary["csncs"]["sizes"] == s["csncs"]["sizes"]
+    assert r.lower_bound == s["csncs"]["separated_lower_bound"] == 2
+    assert len(r.ids) == s["boxes"]["total"]
+    assert int((r.status == aspects.SOLUTION).sum()) == s["boxes"]["solution"]
+    assert int((r.status != aspects.SOLUTION).sum()) == s["boxes"]["undecided"]
+    assert [c.size for c in r.csncs] == s["csncs"]["sizes"]
+    assert len(r.filtered_csncs) == s["csncs"]["filtered"]
+    assert r.complete and r.stopped_by is None
+
+
+def test_arrays_shapes_and_nan_commands(rprpr):
+    _, _, r, _ = rprpr
+    n = len(r.ids)
+    assert r.lower.shape == (n, 4) and r.upper.shape == (n, 4)
+    assert np.all(np.diff(r.ids.astype(np.int64)) > 0)
+    sol = r.status == aspects.SOLUTION
+    assert not np.isnan(r.lower[sol]).any()
+    # An undecided box's command part is not in aspects.idx: NaN, its pose part is not.
+    assert np.isnan(r.lower[~sol][:, 2:]).all() and not np.isnan(r.lower[~sol][:, :2]).any()
+    assert np.all(r.lower[sol] <= r.upper[sol])
+    assert set(np.unique(r.csnc[~sol]).tolist()) == {-1}
+
+
+def test_out_writes_the_command_lines_files(rprpr):
+    cli_dir, py_dir, _, _ = rprpr
+    for name in ("boxes.csv", "aspects.idx"):
+        with open(os.path.join(cli_dir, name), "rb") as a, open(os.path.join(py_dir, name), "rb") as b:
+            assert a.read() == b.read(), name
+    assert os.path.isfile(os.path.join(py_dir, "aspects.cert"))
+    assert not [f for f in os.listdir(py_dir) if "tmp" in f]
+
+
+def test_load_equals_solve(rprpr):
+    _, py_dir, r, _ = rprpr
+    loaded = aspects.load(py_dir)
+    for key in ("ids", "status", "csnc"):
+        assert np.array_equal(getattr(loaded, key), getattr(r, key))
+    assert np.array_equal(loaded.lower, r.lower, equal_nan=True)
+    assert loaded.summary["boxes"] == r.summary["boxes"]
+    assert loaded.directory == py_dir
+
+
+def test_load_does_not_read_boxes_csv(rprpr, tmp_path):
+    _, py_dir, r, _ = rprpr
+    d = tmp_path / "idx_only"
+    d.mkdir()
+    for name in ("aspects.idx", "summary.json"):
+        (d / name).write_bytes(open(os.path.join(py_dir, name), "rb").read())
+    assert len(aspects.load(str(d)).ids) == len(r.ids)
+
+
+def test_query_and_path_equal_the_command_line(rprpr):
+    cli_dir, _, r, _ = rprpr
+    q = json.loads(cli("query", cli_dir, "--pose", "3,5", "--json").stdout)
+    assert r.query([3, 5]) == q
+    assert q["outcome"] == "answered" and [a["csnc"] for a in q["answers"]] == [1]
+    lo, hi = q["answers"][0]["command_lo"][0], q["answers"][0]["command_hi"][0]
+    assert lo <= math.sqrt(34) <= hi and hi - lo < 1e-14  # q1 = |(3, 5)|
+    p = json.loads(cli("path", cli_dir, "--from", "3,5", "--to", "4,2.5", "--json").stdout)
+    assert r.path((3.0, 5.0), np.array([4.0, 2.5])) == p
+    assert p["outcome"] == "found"
+
+
+def test_check_verifies(rprpr):
+    _, _, r, s = rprpr
+    v = r.check()
+    assert v["verdict"] == "VERIFIED"
+    assert v["solutions"] == s["boxes"]["solution"]
+    assert v["checked_lower_bound"] == 2
+
+
+def test_check_without_directory():
+    r = aspects.solve(aspects.Model.from_file(PRRP), eps=0.1)
+    assert r.directory is None
+    with pytest.raises(ValueError, match="out=DIR"):
+        r.check()
+
+
+def test_max_boxes_gives_a_partial_result():
+    r = aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, max_boxes=10)
+    assert not r.complete and r.stopped_by == "max-boxes"
+    assert r.summary["boxes"]["unexplored"] == int((r.status == aspects.UNEXPLORED).sum()) > 0
+
+
+def test_progress_callback_and_its_exception():
+    seen = []
+    model = aspects.Model.default()
+    aspects.solve(model, eps=0.3, progress=seen.append)
+    assert seen and {"processed", "solutions", "undecided", "decided", "phases"} <= set(seen[-1])
+    assert [name for name, _ in seen[-1]["phases"]][:1] == ["search"]
+
+    def fail(d):
+        raise KeyError("from the callback")
+    with pytest.raises(KeyError, match="from the callback"):
+        aspects.solve(model, eps=0.05, progress=fail)
+
+
+def test_progress_true_uses_tqdm_when_installed(monkeypatch):
+    import sys
+    import types
+    bars = []
+
+    class FakeTqdm:
+        def __init__(self, total, **kw):
+            self.total, self.n, self.closed = total, 0.0, False
+            bars.append(self)
+
+        def update(self, x):
+            self.n += x
+
+        def set_postfix_str(self, s, refresh=True):
+            self.postfix = s
+
+        def close(self):
+            self.closed = True
+    monkeypatch.setitem(sys.modules, "tqdm", types.SimpleNamespace(tqdm=FakeTqdm))
+    aspects.solve(aspects.Model.default(), eps=0.1)  # warm: the next run is the measured one
+    aspects.solve(aspects.Model.default(), eps=0.1, progress=True)
+    assert len(bars) == 1 and bars[0].closed and bars[0].total == 100
+    assert 0 < bars[0].n <= 100 and "boxes" in bars[0].postfix
+
+
+def test_progress_true_without_tqdm_prints_lines(monkeypatch, capsys):
+    import sys
+    monkeypatch.setitem(sys.modules, "tqdm", None)  # import tqdm raises ImportError
+    aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, progress=True)
+    err = capsys.readouterr().err
+    assert err.startswith("[aspects] ") and "[aspects] done: 95 boxes, 36 solution" in err
+
+
+def test_sigint_stops_within_a_second():
+    model = aspects.Model.default()
+    fired = []
+
+    def interrupt():
+        time.sleep(1.0)
+        fired.append(time.monotonic())
+        os.kill(os.getpid(), signal.SIGINT)
+    threading.Thread(target=interrupt).start()
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = aspects.solve(model, eps=0.02, threads=1)
+    assert fired and time.monotonic() - fired[0] < 1.0
+    assert not r.complete and r.stopped_by == "signal"
+    assert r.summary["boxes"]["unexplored"] > 0
+    assert any("interrupted" in str(x.message) for x in w)
+
+
+# ------------------------------------------------------------------------------ bad input
+@pytest.mark.parametrize("pose, error, match", [
+    ([float("nan"), 1.0], ValueError, "not a finite number"),
+    ([1.0], ValueError, "2 coordinates"),
+    ([1.0, 2.0, 3.0], ValueError, "2 coordinates"),
+    ("3,5", TypeError, "sequence of numbers"),
+    ([None, 1], TypeError, "sequence of numbers"),
+    (5, TypeError, "sequence of numbers"),
+    ([math.inf, 1], ValueError, "not a finite number"),
+])
+def test_bad_pose(rprpr, pose, error, match):
+    _, _, r, _ = rprpr
+    with pytest.raises(error, match=match):
+        r.query(pose)
+    with pytest.raises(error, match=match):
+        r.path(pose, [3, 5])
+
+
+def test_bad_csnc(rprpr):
+    _, _, r, _ = rprpr
+    with pytest.raises(ValueError, match="csnc must be between 0 and 1"):
+        r.path([3, 5], [4, 2.5], csnc=7)
+    with pytest.raises(TypeError):
+        r.path([3, 5], [4, 2.5], csnc="0")
+
+
+def test_load_not_a_result(tmp_path):
+    with pytest.raises(aspects.ResultError, match="no aspects.idx"):
+        aspects.load(str(tmp_path))
+    with pytest.raises(aspects.ResultError, match="not a directory"):
+        aspects.load(str(tmp_path / "missing"))
+    (tmp_path / "aspects.idx").write_bytes(b"not an index at all")
+    with pytest.raises(aspects.ResultError, match="aspects.idx"):
+        aspects.load(str(tmp_path))
+    with pytest.raises(TypeError):
+        aspects.load(3)
+
+
+@pytest.mark.parametrize("kw, error", [
+    (dict(eps=-1), ValueError), (dict(eps=float("nan")), ValueError), (dict(eps="a"), TypeError),
+    (dict(threads=-3), ValueError), (dict(threads=1.5), TypeError),
+    (dict(time_limit=0), ValueError), (dict(bisect="sideways"), ValueError),
+    (dict(progress=3), TypeError), (dict(max_boxes=0), ValueError),
+])
+def test_bad_solve_arguments(kw, error):
+    with pytest.raises(error):
+        aspects.solve(aspects.Model.from_file(PRRP), **kw)
+    with pytest.raises(TypeError):
+        aspects.solve("robots/prrp.robot")
+
+
+# ------------------------------------------------------------------------------ plots
+def is_png(path):
+    with open(path, "rb") as f:
+        return f.read(8) == b"\x89PNG\r\n\x1a\n"
+
+
+def test_result_plot_and_cli_plot(rprpr, tmp_path):
+    cli_dir, _, r, _ = rprpr
+    path = r.path([3, 5], [4, 2.5])
+    fig = r.plot(str(tmp_path / "py.png"), path=path)
+    assert is_png(tmp_path / "py.png")
+    assert fig.axes[0].get_xlabel() == "x1" and fig.axes[0].get_ylabel() == "x2"
+    (tmp_path / "path.json").write_text(json.dumps(path))
+    out = cli("plot", cli_dir, "--out", str(tmp_path / "cli.png"), "--path",
+              str(tmp_path / "path.json"))
+    assert out.stdout == f"wrote {tmp_path / 'cli.png'}\n"
+    assert is_png(tmp_path / "cli.png")
+    assert sorted(os.listdir(tmp_path)) == ["cli.png", "path.json", "py.png"]
+
+
+def test_cli_plot_bad_input(rprpr, tmp_path):
+    cli_dir, _, _, _ = rprpr
+    assert cli("plot", str(tmp_path), check=False).returncode == 2
+    (tmp_path / "bad.json").write_text("{not json")
+    run = cli("plot", cli_dir, "--out", str(tmp_path / "x.png"), "--path",
+              str(tmp_path / "bad.json"), check=False)
+    assert run.returncode == 2 and "not JSON" in run.stderr
+    (tmp_path / "short.json").write_text(json.dumps(
+        {"csnc": 0, "waypoints": [{"pose": [1.0]}]}))
+    run = cli("plot", cli_dir, "--out", str(tmp_path / "x.png"), "--path",
+              str(tmp_path / "short.json"), check=False)
+    assert run.returncode == 2 and "2 pose coordinates" in run.stderr
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_plot_three_pose_variables(tmp_path):
+    text = """robot cartesian-3
+pose x1 in [-2, 2]
+pose x2 in [-2, 2]
+pose x3 in [-2, 2]
+command q1 in [-3, 3]
+command q2 in [-3, 3]
+command q3 in [-3, 3]
+equation q1 = x1 + x2
+equation q2 = x2 - x1
+equation q3^2 = x3 + 2.5
+"""
+    r = aspects.solve(aspects.Model.from_string(text), eps=0.5)
+    assert r.lower_bound == 2
+    path = r.path([0.2, 0.3, 1.0], [-1.0, 0.5, 1.2])
+    assert path["outcome"] == "found"
+    fig = r.plot(str(tmp_path / "three.png"), path=path)
+    assert is_png(tmp_path / "three.png")
+    assert fig.axes[0].name == "3d" and fig.axes[1].get_zlabel() == "x3"
