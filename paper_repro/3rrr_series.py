@@ -76,8 +76,8 @@ def markdown(rows, sheets_volume, reference):
            "(share of the sheets, numerical) | check_cert |",
            "|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        share = f" ({100 * r['share']:.1f} %)" if r["share"] is not None else ""
-        vol = f"{r['volume']:.0f}{share}" if r["volume"] is not None else "—"
+        share = f" ({100 * r['share']:.2g} %)" if r["share"] is not None else ""
+        vol = f"{r['volume']:,.4g}{share}" if r["volume"] is not None else "—"
         bound = (f"{r['checked_bound']} (VERIFIED)" if r["checked_bound"] is not None
                  else f"{r['bound']} (solver, not checked)")
         out.append(f"| {r['eps']:g} | {r['boxes']:,} ({r['solution']:,}){r['stopped']} | "
@@ -105,18 +105,22 @@ def plot(rows, reference, png):
     if reference:
         ax[0].axhline(reference[1], color="grey", ls=":",
                       label=f"sampling count (numerical, not certified): {reference[1]}")
-    ax[0].set_xscale("log")
-    ax[0].set_ylim(bottom=0)
-    ax[0].invert_xaxis()
+    from matplotlib.ticker import FixedLocator, NullLocator, ScalarFormatter
+    for a in ax:
+        a.set_xscale("log")
+        a.xaxis.set_major_locator(FixedLocator(eps))
+        a.xaxis.set_minor_locator(NullLocator())
+        a.xaxis.set_major_formatter(ScalarFormatter())
+        a.invert_xaxis()
+    ax[0].set_yscale("log")
+    ax[0].yaxis.set_major_formatter(ScalarFormatter())
     ax[0].set_xlabel("ε (log scale, finer to the right)")
-    ax[0].set_ylabel("count")
+    ax[0].set_ylabel("count (log scale)")
     ax[0].set_title("Full 3-RRR: aspects against ε")
     ax[0].legend(fontsize=8)
     shares = [(r["eps"], 100 * r["share"]) for r in rows if r["share"] is not None]
     if shares:
         ax[1].plot([e for e, _ in shares], [s for _, s in shares], "o-")
-    ax[1].set_xscale("log")
-    ax[1].invert_xaxis()
     ax[1].set_xlabel("ε (log scale, finer to the right)")
     ax[1].set_ylabel("% of the sheets' pose volume")
     ax[1].set_title("Pose volume in certified solution boxes")
