@@ -16,6 +16,7 @@ Writes into OUTDIR (only the figures whose runs are given):
   fig8_rrrrr_decomposition.png  Fig. 8: the largest RRRRR CSNC and its constrained pieces
   fig9_rrrrr_collisions.png, fig10_rrrrr_joint_limit.png, fig11_rrrrr_obstacle.png
                               Figs. 9-11: constrained RRRRR CSNCs, constraint boundary blue
+  3rrr_csncs.png              beyond the paper: the full 3-RRR as in Fig. 6
 """
 import importlib.util
 import json
@@ -372,6 +373,8 @@ def main():
         fig5(main5, outdir)
     if "3rpr" in runs:
         fig6(runs["3rpr"], outdir)
+    if "3rrr" in runs:  # beyond the paper: the full 3-RRR drawn as Fig. 6
+        save(plotting.csnc_3d(runs["3rrr"], "Beyond the paper — "), outdir, "3rrr_csncs.png")
     for key, fname, sub in (("rprpr", "fig7a_rprpr.png", "(a)"),
                             ("rrrrr", "fig7b_rrrrr.png", "(b)"),
                             ("3rrr_star", "fig7c_3rrr_star.png", "(c)")):

@@ -9,7 +9,7 @@
 #   runs/KEY/               summary.json, model.robot, solve.log, check.json (check_cert
 #                           --json: the certified bound), check.log, record.txt
 #   run_info.txt            mode, command line, commit, build, total time
-#   beyond_3rrr.md, figures/3rrr_bound.png   the full 3-RRR beside the numerical sampling
+#   beyond_3rrr.md, figures/3rrr_bound.png, figures/3rrr_csncs.png   the full 3-RRR beside the numerical sampling
 #                           count of robots/3rrr_sampling.py (when 3rrr was run)
 #
 # Everything is written in a temporary directory next to OUT and renamed at the end, so
