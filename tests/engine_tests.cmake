@@ -51,7 +51,7 @@ target_compile_definitions(test_evaluator_differential PRIVATE
 gtest_discover_tests(test_evaluator_differential TEST_PREFIX "test_evaluator_differential."
   DISCOVERY_MODE PRE_TEST PROPERTIES TIMEOUT 120 LABELS core)
 
-# The paper-reproduction pipeline in quick mode (all eight robots, coarse precisions,
+# The paper-reproduction pipeline in quick mode (the paper's eight robots and the full 3-RRR, coarse precisions,
 # every certificate checked), so that it cannot rot.
 add_test(NAME paper_repro.quick
          COMMAND ${PROJECT_SOURCE_DIR}/paper_repro/run_all.sh --quick --build ${PROJECT_BINARY_DIR}
