@@ -88,6 +88,10 @@ class Result:
                       doc="aspects.SOLUTION, UNDECIDED_NO_EXISTENCE, UNDECIDED_SINGULAR, "
                           "UNDECIDED_CONSTRAINT or UNEXPLORED")
     csnc = property(lambda self: self._a("csnc"), doc="CSNC of each box, -1 when undecided")
+    signs = property(lambda self: self._a("signs"),
+                     doc="signs of the determinant factors (summary['factors'] order) on each "
+                         "solution box, certified by interval evaluation: -1, +1, or 0 where "
+                         "the enclosure contains 0 (and on undecided boxes)")
 
     @property
     def csncs(self):

@@ -42,7 +42,9 @@ std::vector<double> checked_pose(const LoadedResult& r, const std::vector<double
 }
 
 // Every box by increasing id: id, lower and upper ends (model order; an undecided box's
-// command ends are NaN, the index keeps only its pose part), status, CSNC.
+// command ends are NaN, the index keeps only its pose part), status, CSNC, and the signs
+// of the determinant factors on a solution box (0 where its enclosure straddles 0, and on
+// an undecided box).
 pyb::dict box_arrays(const PyResult& p) {
   const LoadedResult& r = *p.loaded;
   const size_t ns = r.index.solutions.size(), nu = r.index.undecided.size();
@@ -51,6 +53,9 @@ pyb::dict box_arrays(const PyResult& p) {
   pyb::array_t<double> lo({n, nv}), hi({n, nv});
   pyb::array_t<int8_t> status(n);
   pyb::array_t<int32_t> csnc(n);
+  const size_t np = ns > 0 ? r.index.solutions[0].signs.size() : 0;
+  pyb::array_t<int8_t> signs({n, np});
+  auto sgv = signs.mutable_unchecked<2>();
   auto idv = id.mutable_unchecked<1>();
   auto lov = lo.mutable_unchecked<2>();
   auto hiv = hi.mutable_unchecked<2>();
@@ -66,6 +71,7 @@ pyb::dict box_arrays(const PyResult& p) {
       for (size_t v = 0; v < nv; ++v) lov(row, v) = s.lo[v], hiv(row, v) = s.hi[v];
       stv(row) = kSolution;
       csv(row) = s.csnc;
+      for (size_t k = 0; k < np; ++k) sgv(row, k) = int8_t(s.signs[k]);
     } else {
       const IndexUndecidedBox& u = r.index.undecided[j++];
       idv(row) = u.id;
@@ -76,6 +82,7 @@ pyb::dict box_arrays(const PyResult& p) {
       }
       stv(row) = int8_t(1 + u.kind);
       csv(row) = -1;
+      for (size_t k = 0; k < np; ++k) sgv(row, k) = 0;
     }
     ++row;
   }
@@ -85,14 +92,21 @@ pyb::dict box_arrays(const PyResult& p) {
   d["upper"] = hi;
   d["status"] = status;
   d["csnc"] = csnc;
+  d["signs"] = signs;
   return d;
 }
 
-// Per CSNC: its signs of the determinant factors (constant on a CSNC; from its first box).
+// Per CSNC: the signs of the determinant factors, which are constant on it. A box's
+// enclosure of a factor may straddle 0 where another box of the CSNC decides the sign, so
+// each factor's sign is the first decided one among its boxes (0: decided on none).
 std::vector<std::vector<int>> csnc_signs(const LoadedResult& r) {
   std::vector<std::vector<int>> signs(r.index.csnc_count);
-  for (const IndexSolutionBox& s : r.index.solutions)
-    if (signs[s.csnc].empty()) signs[s.csnc].assign(s.signs.begin(), s.signs.end());
+  for (const IndexSolutionBox& s : r.index.solutions) {
+    std::vector<int>& c = signs[s.csnc];
+    if (c.empty()) c.assign(s.signs.size(), 0);
+    for (size_t i = 0; i < s.signs.size(); ++i)
+      if (c[i] == 0) c[i] = s.signs[i];
+  }
   return signs;
 }
 
