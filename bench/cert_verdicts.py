@@ -10,7 +10,8 @@ Each file is checked on one thread and on two (CHECK_CERT_BATCH=3, many batch bo
 a work bomb (a name containing 'bomb') also with CHECK_CERT_WORK_BASE=20. compare re-runs
 every recorded case (with --trusted-only added if asked) and prints each difference; it
 exits 1 on any difference, 0 otherwise. The deliberate break that made it fail: a checker
-that skipped the P2 column-weight test (3 tamper files then VERIFIED instead of REJECTED).
+without the test that P2's column weights are positive (the tamper case of a negative
+weight then gave another first line, on 1 and on 2 threads: 2 cases differ).
 """
 import os
 import subprocess

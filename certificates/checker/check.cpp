@@ -1,10 +1,9 @@
-// main.cpp — `check_cert FILE.cert`: reads a certificate of `aspects solve` record by
-// record and re-verifies every claim with the checker's own parser, evaluator and proofs
-// (FORMAT.md is the specification; exit statuses in checker.h). Each record's structure
-// is checked here, in order; its interval proofs are queued (proof_batch.cpp) and judged in
-// record order. It keeps only what later sections need: the output boxes as doubles with
-// their claimed signs (each proved by a queued proof), the union-find of the links and the
-// CSNC of each box.
+// check.cpp — trusted core: the record rules. Reads a certificate of `aspects solve` record
+// by record and re-verifies every claim with the checker's own parser, evaluator and proofs
+// (FORMAT.md is the specification). Each record's structure is checked here, in order; its
+// interval proofs run in line, or are queued (proof_batch.cpp) and judged in record order.
+// It keeps only what later sections need: the output boxes as doubles with their claimed
+// signs (each proved), the union-find of the links and the CSNC of each box.
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -42,7 +41,8 @@ struct Checker {
   LineReader rd;
   Verdict& out;
   Model m;
-  std::unique_ptr<Evaluator> ev;  // the header's constants; the proofs run in `batch`
+  std::unique_ptr<Evaluator> ev;  // the header's constants, and the proofs run in line
+  std::unique_ptr<Prover> prover;  // the proofs in line (--trusted-only): on `ev`
   int threads = 1;
   int n = 0, nv = 0, p = 0;    // equations, variables, factors
   int version = 0;             // 1: P2 without column weights (D = 1); 2: with DX, DQ
@@ -85,9 +85,19 @@ struct Checker {
     const uint64_t per_byte = uint64_t(1) << 10;
     return (base + per_byte * rd.bytes()) / weight;
   }
-  // Queues a proof of the record read last (proof_batch.cpp): it runs later, maybe on
-  // another thread, so it captures what it needs by value.
-  void prove(ProofBatch::Proof proof) { batch->add(rec(), work_limit(), std::move(proof)); }
+  // Proves a claim of the record read last: in line, or queued (proof_batch.cpp) to run
+  // later, maybe on another thread, so it captures what it needs by value. Either way the
+  // first failure in record order is the verdict, and a proof past the work limit of its
+  // record is rejected at that record.
+  void prove(const ProofBatch::Proof& proof) {
+    if (batch) return batch->add(rec(), work_limit(), proof);
+    ev->work_limit = work_limit();
+    const std::string why = proof(*prover);
+    if (!why.empty()) reject(why);
+  }
+  void flush() {
+    if (batch) batch->flush();
+  }
   // A proof that `box` holds no feasible solution; `why` + the box is the rejection otherwise.
   void prove_refuted(const Box& box, const char* why) {
     prove([this, box, why](Prover& pr) -> std::string {
@@ -677,19 +687,21 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     const int64_t records = rd.expect({"end"}, 1).integer();
     if (records != rec() - 1) malformed(rec(), "end: wrong record count");
     rd.expect_eof();
-    batch->flush();  // every proof judged before the bound
+    flush();  // every proof judged before the bound
     // A real subdivision has a few neighbours per box, while S records that share one IMAGE
     // over many cells make M quadratic (10^5 boxes: 5·10^9 pairs): rejected instead.
     const size_t max_pairs = (size_t(1) << 22) + 64 * R.size();
     const auto t0 = std::chrono::steady_clock::now();
-    const NeighbourSweep M(R, periodic, ev->two_pi);
+    std::unique_ptr<PairSweep> M;
+    if (o.trusted_only) M.reset(new PlainSweep(R, periodic, ev->two_pi));
+    else M.reset(new NeighbourSweep(R, periodic, ev->two_pi));
     uint32_t checkable = 0;  // the factors the checker can verify: all but `user` ones
     for (int i = 0; i < p; ++i)
       if (factors[i].kind != Factor::User) checkable |= 1u << i;
     size_t pairs = 0;
     try {
-      out.recomputed = lower_bound(R, M, (1u << p) - 1, max_pairs, &pairs, threads);
-      out.checked = out.user_factors ? lower_bound(R, M, checkable, max_pairs, nullptr, threads)
+      out.recomputed = lower_bound(R, *M, (1u << p) - 1, max_pairs, &pairs, threads);
+      out.checked = out.user_factors ? lower_bound(R, *M, checkable, max_pairs, nullptr, threads)
                                      : out.recomputed;
     } catch (const std::length_error& e) {
       if (std::string(e.what()) == "neighbourhood graph")
@@ -703,12 +715,12 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
       const std::string both = std::to_string(claim) + " exceeds the recomputed ";
       rejected(claim_rec, "claimed lower bound " + both + std::to_string(out.recomputed));
     }
-    out.verdict = "VERIFIED";
+    out.outcome = Outcome::Verified;
     if (claim > out.checked) {
       out.reason = "the claimed lower bound rests on user-supplied factors, which the checker "
                    "cannot verify; without them it is " + std::to_string(out.checked);
       if (o.trust_factors) out.reason += "; trusted (--trust-factors)";
-      if (!o.trust_factors) out.verdict = "UNCHECKED";
+      if (!o.trust_factors) out.outcome = Outcome::Unchecked;
     }
     return pairs;
   }
@@ -725,11 +737,13 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     const double units = double(m.nodes.size()) * double(m.vars.size() + 5) *
                          double(mpfr_get_default_prec() / 64 + 2);
     threads = int(std::max(1.0, std::min(double(threads), double(1 << 25) / units)));
-    batch.reset(new ProofBatch(m, threads, ev->work));
+    if (o.trusted_only) threads = 1;
+    if (o.trusted_only) prover.reset(new Prover(*ev));
+    else batch.reset(new ProofBatch(m, threads, ev->work));
     try {
       body(o);
     } catch (const CertError&) {
-      batch->flush();  // a failed proof of an earlier record is the one to report
+      flush();  // a failed proof of an earlier record is the one to report
       throw;
     }
     out.cert_sha = rd.file_sha256();
@@ -738,7 +752,9 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
     std::fprintf(stderr,
                  "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M "
                  "(%.2f s), recomputed lower bound %ld, %d thread%s, %.2f s\n",
-                 batch->refutations(), batch->refute_boxes(), (unsigned long long)batch->work,
+                 batch ? batch->refutations() : prover->refutations,
+                 batch ? batch->refute_boxes() : prover->refute_boxes,
+                 (unsigned long long)(batch ? batch->work : ev->work),
                  pairs_, graph_seconds_, out.recomputed, threads, threads > 1 ? "s" : "",
                  std::chrono::duration<double>(elapsed).count());
   }
@@ -768,177 +784,31 @@ std::tie(c, a, b) = pair_in_csnc(false, last_assembly, k);
 
 }  // namespace
 
-int cc::check_certificate(FILE* f, const CheckOptions& o, Verdict& out) {
-  out = Verdict();
+const char* cc::outcome_name(Outcome o) {
+  static const char* const names[] = {"VERIFIED", "REJECTED", "MALFORMED", "UNCHECKED"};
+  return names[int(o)];
+}
+
+Verdict cc::check_certificate(FILE* f, const CheckOptions& o) {
+  Verdict out;
   std::unique_ptr<Checker> c;
   try {
     c.reset(new Checker(f, out));
     c->run(o);
-    return out.verdict == "VERIFIED" ? kVerified : kUserFactors;
   } catch (const WorkLimit& e) {  // a limit of the checker: rejected, as out of memory
-    out.verdict = "REJECTED";
+    out.outcome = Outcome::Rejected;
     out.record = c ? c->rec() : 0;
     out.reason = e.what();
-    return kRejected;
   } catch (const CertError& e) {
-    out.verdict = e.malformed ? "MALFORMED" : "REJECTED";
+    out.outcome = e.malformed ? Outcome::Malformed : Outcome::Rejected;
     out.record = e.record;
     out.reason = e.what();
-    return e.malformed ? kMalformed : kRejected;
   } catch (const std::bad_alloc&) {
-    out.verdict = "REJECTED";
+    out.outcome = Outcome::Rejected;
     out.reason = "out of memory";
   } catch (const std::exception& e) {
-    out.verdict = "REJECTED";
+    out.outcome = Outcome::Rejected;
     out.reason = std::string("internal error: ") + e.what();
   }
-  return kRejected;
+  return out;
 }
-
-#ifndef CHECK_CERT_NO_MAIN
-#include "aspects_version.h"  // generated by the build (version and git commit)
-namespace {
-
-// s as a JSON string literal: a name from the model cannot break out of its quotes.
-std::string quoted(const std::string& s) {
-  std::string q = "\"";
-  for (unsigned char c : s) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-    if (c == '"' || c == '\\') q += '\\';
-    q += c < 0x20 || c >= 0x7f ? std::string(buf) : std::string(1, char(c));
-  }
-  return q + "\"";
-}
-
-// The counts of a verdict, in print order; the text line leaves out the recomputed bound.
-struct Count {
-  const char* name;
-  long value;
-  bool in_text;
-};
-std::vector<Count> counts(const Verdict& v) {
-  return {{"solutions", v.solutions, true},   {"undecided", v.undecided, true},
-          {"unexplored", v.unexplored, true}, {"wide_undecided", v.wide_undecided, true},
-          {"links", v.links, true},
-          {"csncs", v.csncs, true},           {"cuspidal", v.cuspidal, true},
-          {"cuspidal_csncs", v.cuspidal_csncs, true},
-          {"assembly", v.assembly, true},     {"lower_bound", v.claimed, true},
-          {"recomputed_lower_bound", v.recomputed, false},
-          {"checked_lower_bound", v.checked, true}};
-}
-
-// The shortest decimal that reads back as x (valid JSON too).
-std::string shortest(double x) {
-  char b[32];
-  return std::string(b, std::to_chars(b, b + sizeof b, x).ptr);
-}
-
-// Every cell searched down to eps: no N leaf, no U leaf wider than eps.
-bool complete(const Verdict& v) { return v.unexplored == 0 && v.wide_undecided == 0; }
-
-// One line. The robot's name, the one field a user controls, comes last and quoted.
-std::string text_line(const Verdict& v) {
-  std::string s = "check_cert: " + v.verdict;
-  if (v.verdict == "REJECTED" || v.verdict == "MALFORMED") {
-    if (v.record > 0) s += " record " + std::to_string(v.record);
-    return s + ": " + v.reason;
-  }
-  s += " sha256(cert)=" + v.cert_sha + " sha256(model)=" + v.model_sha;
-  s += std::string(complete(v) ? " complete=yes" : " complete=no") + " eps=" + shortest(v.eps);
-  for (const Count& c : counts(v))
-    if (c.in_text) s += std::string(" ") + c.name + "=" + std::to_string(c.value);
-  s += " robot=" + quoted(v.robot);
-  if (!v.reason.empty()) s += " (" + v.reason + ")";
-  return s;
-}
-
-std::string json_line(const Verdict& v, int code) {
-  std::string s = "{\"verdict\": " + quoted(v.verdict);
-  s += ", \"exit\": " + std::to_string(code);
-  if (v.record > 0) s += ", \"record\": " + std::to_string(v.record);
-  if (!v.reason.empty()) s += ", \"reason\": " + quoted(v.reason);
-  if (code == kVerified || code == kUserFactors) {
-    s += ", \"sha256_cert\": " + quoted(v.cert_sha);
-    s += ", \"sha256_model\": " + quoted(v.model_sha);
-    s += ", \"robot\": " + quoted(v.robot);
-    s += std::string(", \"complete\": ") + (complete(v) ? "true" : "false");
-    s += ", \"eps\": " + shortest(v.eps);
-    for (const Count& c : counts(v))
-      s += std::string(", \"") + c.name + "\": " + std::to_string(c.value);
-    s += std::string(", \"user_factors\": ") + (v.user_factors ? "true" : "false");
-  }
-  return s + "}";
-}
-
-const char* const kHelp =
-    "usage: check_cert [--quiet] [--json] [--trust-factors] [--threads N] FILE.cert\n"
-    "       check_cert --version | --help\n"
-    "Re-verifies a certificate of `aspects solve` (certificates/FORMAT.md).\n"
-    "  --json           print the verdict as one JSON object (for scripts)\n"
-    "  --trust-factors  accept a lower bound that rests on user-supplied factors\n"
-    "  --threads N      run the interval proofs and the sweep of M on N threads (default\n"
-    "                   0: one per core);\n"
-    "                   the verdict, the record it names and its reason do not depend on N\n"
-    "Exit 0: verified; 1: rejected (or out of memory); 2: malformed or usage error;\n"
-    "3: every proof verified, but the claimed lower bound rests on a user-supplied\n"
-    "   `factor` the checker cannot verify (not given --trust-factors).\n";
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  CheckOptions o;
-  bool json = false;
-  bool usage = argc < 2;
-  std::string path;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--help") {
-      std::printf("%s", kHelp);
-      return 0;
-    }
-    if (a == "--version") {  // like --help: prints and exits 0 wherever it stands
-      std::printf("check_cert %s%s%s%s\n", ASPECTS_VERSION, *ASPECTS_GIT_COMMIT ? " (git " : "",
-                  ASPECTS_GIT_COMMIT, *ASPECTS_GIT_COMMIT ? ")" : "");
-      return 0;
-    }
-    if (a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "--json") {
-      json = true;
-    } else if (a == "--trust-factors") {
-      o.trust_factors = true;
-    } else if (a == "--threads" || a.rfind("--threads=", 0) == 0) {
-      std::string v = a.size() > 9 ? a.substr(10) : (i + 1 < argc ? argv[++i] : "");
-      char* end = nullptr;
-      const long t = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end || t < 0 || t > 256) {
-        std::fprintf(stderr, "check_cert: --threads needs a number from 0 (one per core) to 256, "
-                             "not '%s'\n", v.c_str());
-        return kMalformed;
-      }
-      o.threads = int(t);
-    } else if (a.empty() || a[0] == '-' || !path.empty()) {
-      usage = true;
-    } else {
-      path = a;
-    }
-  }
-  if (usage || path.empty()) {
-    std::fprintf(stderr, "usage: check_cert [--quiet] [--json] [--trust-factors] [--threads N]"
-                         " FILE.cert (see --help)\n");
-    return kMalformed;
-  }
-  FILE* f = std::fopen(path.c_str(), "rb");
-  Verdict v;
-  int code = kMalformed;
-  if (f) {
-    code = check_certificate(f, o, v);
-  } else {
-    v.verdict = "MALFORMED";
-    v.reason = "cannot open " + path;
-  }
-  std::printf("%s\n", json ? json_line(v, code).c_str() : text_line(v).c_str());
-  return code;
-}
-#endif
