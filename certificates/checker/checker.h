@@ -14,12 +14,10 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -90,8 +88,8 @@ class LineReader {
   size_t pos_ = 0;                        // the next field word() returns
 };
 
-// ---- The whole check (check.cpp): reads a certificate from f (closed on return) and returns
-// the exit status, with what it found in `out`.
+// ---- The whole check (check.cpp): reads a certificate from f (closed on return) and says
+// what it found; the outcome is the exit status.
 struct CheckOptions {
   bool quiet = false;          // no statistics on stderr
   bool trust_factors = false;  // accept a bound that rests on user-supplied factors
@@ -374,10 +372,8 @@ class ProofBatch {
   struct Worker;
   struct Job;
   void work_on(int t);
-  void serve(int t);
   void start();
   void finish();
-  void stop_helpers();
   const mpfr_prec_t prec_;
   const size_t batch_;  // jobs per batch
   std::vector<std::unique_ptr<Worker>> workers_;
@@ -385,12 +381,7 @@ class ProofBatch {
   std::vector<Job> running_;  // the batch the threads work on
   std::atomic<size_t> next_{0};
   bool failed_ = false;  // a proof failed: it is the verdict, nothing after it is judged
-  std::vector<std::thread> helpers_;
-  std::mutex m_;
-  std::condition_variable go_, done_;
-  uint64_t round_ = 0;
-  int busy_ = 0;
-  bool stop_ = false;
+  std::vector<std::thread> helpers_;  // running the batch beside this thread
 };
 
 // ---- The combinatorial half of the check (bound.cpp; fast_sweep.cpp): a union-find, the

@@ -10,6 +10,7 @@
 #include <cfloat>
 #include <cmath>
 #include <exception>
+#include <mutex>
 #include <thread>
 #include <utility>
 
