@@ -45,6 +45,8 @@ struct CertError : std::runtime_error {
 std::string sha256_hex(const std::string& bytes);
 // A canonical decimal integer (FORMAT.md); `rec` is the record named in the error.
 int64_t parse_int(std::string_view s, long rec);
+// A canonical hexadecimal real (FORMAT.md), exactly.
+double parse_real(std::string_view s, long rec);
 
 // f itself, or, if f holds a zstd stream (compressed_input.cpp), a stream of its
 // decompressed bytes that owns f. A corrupt or truncated stream reads as a read error.
