@@ -285,13 +285,17 @@ class Evaluator {
   std::vector<Ival> val_, der_, cval_;
   // Per node: 0 defined (and finite) on the whole box, 1 partial or unbounded, 2 nowhere.
   std::vector<int> cstat_, st_;  // constant nodes (once), every node (last evaluation)
-  // One-entry cache of sin and cos per argument node: MPFR trigonometry is the costly
-  // part, and sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit it.
+  // Caches of sin and cos per argument node: MPFR trigonometry is the costly part.
+  // sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit the last argument;
+  // a contraction moves one end at a time, and the last two ends keep the other one.
   struct TrigCache {
     Ival arg, sin, cos;
+    Ival end[2], end_sin[2], end_cos[2];  // two recent ends and their enclosures
+    int last = 0;
   };
-  std::vector<TrigCache> tc_;
-  void sincos(const Ival& a, Ival& s, Ival& c);
+  std::vector<TrigCache> tc_;  // one per argument of sin or cos
+  std::vector<int> tc_of_;     // per node: its cache in tc_, -1 if none
+  void sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c);
   void extremum(Ival& v, const Ival& a, double off, double lo, double hi);
   Ival pi_;
   uint64_t dirs_ = 0;
