@@ -2,10 +2,11 @@
 // of `aspects solve` (FORMAT.md is the specification). It shares no code with core/ or
 // proofs/. The trusted core, which alone decides a verdict: the reader (cert_reader.cpp,
 // compressed_input.cpp), the model parser (model.cpp), the MPFI evaluator (eval.cpp), the
-// proofs on one box (proofs.cpp), the record rules (check.cpp) and the graph M with the
-// bound (bound.cpp). The optional speed layer, tested against the core (`--trusted-only`
-// turns it off): proofs on T threads (proof_batch.cpp) and the strip sweep of M with float
-// items on T threads (fast_sweep.cpp). The command line and its output: cli.cpp.
+// proofs on one box (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp,
+// sections.cpp) and the graph M with the bound (bound.cpp). The optional speed layer,
+// tested against the core (`--trusted-only` turns it off): proofs on T threads
+// (proof_batch.cpp) and the strip sweep of M with float items on T threads
+// (fast_sweep.cpp). The command line and its output: cli.cpp.
 #pragma once
 
 #include <mpfi.h>
