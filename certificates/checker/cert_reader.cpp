@@ -119,16 +119,40 @@ int64_t parse_int(std::string_view s, long rec) {
 }
 
 // A real is exactly what glibc's printf("%a") prints for a finite double (FORMAT.md): no
-// decimal form, no redundant zero, no upper case, no infinity or NaN. strtod reads a
-// hexadecimal float exactly, and printing its value back must give the field unchanged.
-static double parse_real(std::string_view s, long rec) {
-  const std::string field(s);
-  const double v = std::strtod(field.c_str(), nullptr);
-  char back[64];
-  std::snprintf(back, sizeof back, "%a", v);
-  if (!std::isfinite(v) || field != back)
-    malformed(rec, "bad real '" + field + "' (expected a %a hexadecimal float)");
-  return v;
+// decimal form, no redundant zero, no upper case, no infinity or NaN. Read by its grammar,
+// which only that form passes: [-]0x1[.F]p±E for a normal double (E in -1022..1023),
+// [-]0x0.Fp-1022 for a subnormal one, [-]0x0p+0 for zero; F holds 1 to 13 lower-case hex
+// digits, the last not 0, and E has no leading zero. The value is then exact.
+double parse_real(std::string_view s, long rec) {
+  const auto hex = [](char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1; };
+  const size_t n = s.size();
+  size_t i = n && s[0] == '-';
+  bool ok = n >= i + 6 && s[i] == '0' && s[i + 1] == 'x' && (s[i + 2] == '0' || s[i + 2] == '1');
+  const bool normal = ok && s[i + 2] == '1';
+  i += 3;
+  uint64_t frac = 0;
+  int digits = 0;
+  if (ok && s[i] == '.') {
+    for (++i; i < n && hex(s[i]) >= 0; ++i, ++digits) frac = 16 * frac + uint64_t(hex(s[i]));
+    ok = digits >= 1 && digits <= 13 && s[i - 1] != '0';
+  }
+  ok = ok && i + 2 < n && s[i] == 'p' && (s[i + 1] == '+' || s[i + 1] == '-');
+  const bool minus = ok && s[i + 1] == '-';
+  i += 2;
+  ok = ok && n - i <= 4 && !(s[i] == '0' && n - i > 1);
+  int e = 0;
+  for (; ok && i < n; ++i) {
+    ok = s[i] >= '0' && s[i] <= '9';
+    e = 10 * e + (s[i] - '0');
+  }
+  if (minus) e = -e;
+  const uint64_t mant = digits ? frac << (52 - 4 * digits) : 0;
+  if (normal) ok = ok && e >= -1022 && e <= 1023 && !(minus && e == 0);
+  else ok = ok && (digits ? minus && e == -1022 : !minus && e == 0);
+  if (!ok) malformed(rec, "bad real '" + std::string(s) + "' (expected a %a hexadecimal float)");
+  const double v = normal ? std::ldexp(double((uint64_t(1) << 52) | mant), e - 52)
+                          : std::ldexp(double(mant), -1074);
+  return s[0] == '-' ? -v : v;
 }
 
 LineReader& LineReader::expect(const std::vector<const char*>& words, size_t extra) {

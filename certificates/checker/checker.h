@@ -1,8 +1,12 @@
 // checker.h — every declaration of check_cert, the independent checker of the certificates
 // of `aspects solve` (FORMAT.md is the specification). It shares no code with core/ or
-// proofs/: its own reader (cert_reader.cpp), model parser (model.cpp), MPFI evaluator
-// (eval.cpp), proofs on one box (proofs.cpp), graph and bound (graph.cpp), the proofs on
-// T threads (proof_batch.cpp), and the record by record check (main.cpp).
+// proofs/. The trusted core, which alone decides a verdict: the reader (cert_reader.cpp,
+// compressed_input.cpp), the model parser (model.cpp), the MPFI evaluator (eval.cpp), the
+// proofs on one box (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp,
+// sections.cpp) and the graph M with the bound (bound.cpp). The optional speed layer,
+// tested against the core (`--trusted-only` turns it off): proofs on T threads
+// (proof_batch.cpp) and the strip sweep of M with float items on T threads
+// (fast_sweep.cpp). The command line and its output: cli.cpp.
 #pragma once
 
 #include <mpfi.h>
@@ -11,12 +15,10 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -44,6 +46,8 @@ struct CertError : std::runtime_error {
 std::string sha256_hex(const std::string& bytes);
 // A canonical decimal integer (FORMAT.md); `rec` is the record named in the error.
 int64_t parse_int(std::string_view s, long rec);
+// A canonical hexadecimal real (FORMAT.md), exactly.
+double parse_real(std::string_view s, long rec);
 
 // f itself, or, if f holds a zstd stream (compressed_input.cpp), a stream of its
 // decompressed bytes that owns f. A corrupt or truncated stream reads as a read error.
@@ -87,17 +91,23 @@ class LineReader {
   size_t pos_ = 0;                        // the next field word() returns
 };
 
-// ---- The whole check (main.cpp): reads a certificate from f (closed on return) and returns
-// the exit status, with what it found in `out`.
+// ---- The whole check (check.cpp): reads a certificate from f (closed on return) and says
+// what it found; the outcome is the exit status.
 struct CheckOptions {
   bool quiet = false;          // no statistics on stderr
   bool trust_factors = false;  // accept a bound that rests on user-supplied factors
   int threads = 0;             // threads for the interval proofs (0: one per core)
+  bool trusted_only = false;   // no speed layer: proofs in line, the plain sweep of M
 };
 
-// What a check found; `verdict` is VERIFIED, UNCHECKED, REJECTED or MALFORMED.
+// The outcome of a check; its value is check_cert's exit status.
+enum class Outcome { Verified = 0, Rejected = 1, Malformed = 2, Unchecked = 3 };
+const char* outcome_name(Outcome o);  // VERIFIED, REJECTED, MALFORMED, UNCHECKED
+
+// What a check found.
 struct Verdict {
-  std::string verdict, reason, cert_sha, model_sha, robot;
+  Outcome outcome = Outcome::Rejected;
+  std::string reason, cert_sha, model_sha, robot;
   long record = 0;  // the record a rejection concerns
   long solutions = 0, undecided = 0, links = 0, csncs = 0;
   long unexplored = 0;  // N records: a stopped run's cells never searched (complete=no)
@@ -109,10 +119,7 @@ struct Verdict {
   bool user_factors = false;
 };
 
-// Exit statuses of check_cert.
-enum Exit { kVerified = 0, kRejected = 1, kMalformed = 2, kUserFactors = 3 };
-
-int check_certificate(FILE* f, const CheckOptions& o, Verdict& out);
+Verdict check_certificate(FILE* f, const CheckOptions& o);
 
 // ---- The only interval type: an owning wrapper around one MPFI interval at the
 // certificate's precision (mpfr_set_default_prec is set once, before any Ival exists), plus
@@ -279,13 +286,17 @@ class Evaluator {
   std::vector<Ival> val_, der_, cval_;
   // Per node: 0 defined (and finite) on the whole box, 1 partial or unbounded, 2 nowhere.
   std::vector<int> cstat_, st_;  // constant nodes (once), every node (last evaluation)
-  // One-entry cache of sin and cos per argument node: MPFR trigonometry is the costly
-  // part, and sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit it.
+  // Caches of sin and cos per argument node: MPFR trigonometry is the costly part.
+  // sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit the last argument;
+  // a contraction moves one end at a time, and the last two ends keep the other one.
   struct TrigCache {
     Ival arg, sin, cos;
+    Ival end[2], end_sin[2], end_cos[2];  // two recent ends and their enclosures
+    int last = 0;
   };
-  std::vector<TrigCache> tc_;
-  void sincos(const Ival& a, Ival& s, Ival& c);
+  std::vector<TrigCache> tc_;  // one per argument of sin or cos
+  std::vector<int> tc_of_;     // per node: its cache in tc_, -1 if none
+  void sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c);
   void extremum(Ival& v, const Ival& a, double off, double lo, double hi);
   Ival pi_;
   uint64_t dirs_ = 0;
@@ -344,7 +355,7 @@ class Prover {
   Ival t1_, t2_;
 };
 
-// ---- The interval proofs on T threads (proof_batch.cpp): main.cpp decides each record's
+// ---- The interval proofs on T threads (proof_batch.cpp, speed layer): check.cpp decides each record's
 // structure itself and queues its proofs; a batch runs on every thread (each with its own
 // evaluator and prover) and is judged in record order, so the verdict is that of one
 // thread: the first failed proof in record order, the work limit charged job by job.
@@ -368,10 +379,8 @@ class ProofBatch {
   struct Worker;
   struct Job;
   void work_on(int t);
-  void serve(int t);
   void start();
   void finish();
-  void stop_helpers();
   const mpfr_prec_t prec_;
   const size_t batch_;  // jobs per batch
   std::vector<std::unique_ptr<Worker>> workers_;
@@ -379,17 +388,12 @@ class ProofBatch {
   std::vector<Job> running_;  // the batch the threads work on
   std::atomic<size_t> next_{0};
   bool failed_ = false;  // a proof failed: it is the verdict, nothing after it is judged
-  std::vector<std::thread> helpers_;
-  std::mutex m_;
-  std::condition_variable go_, done_;
-  uint64_t round_ = 0;
-  int busy_ = 0;
-  bool stop_ = false;
+  std::vector<std::thread> helpers_;  // running the batch beside this thread
 };
 
-// ---- The combinatorial half of the check (graph.cpp): a union-find, the neighbourhood
-// graph M of FORMAT.md ("claim lower-bound") built by sort-and-sweep over the output boxes
-// and their 2π-shifted copies, the separated lower bound (11), and the filtering heuristic.
+// ---- The combinatorial half of the check (bound.cpp; fast_sweep.cpp): a union-find, the
+// neighbourhood graph M of FORMAT.md ("claim lower-bound") by sort-and-sweep over the output
+// boxes and their 2π-shifted copies, the separated lower bound (11), and the filtering rule.
 struct UnionFind {
   std::vector<int> parent;
   void reset(size_t n);
@@ -430,21 +434,49 @@ struct OutBoxes {
 // (graph M) or inward (links) to doubles give the shifted bound each check needs.
 void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x);
 
-// The neighbourhood graph M, never held: a sort-and-sweep over the output boxes (and their
-// 2π-shifted copies on the sweep variable) that hands each pair (a, b), a < b, such that for
-// some shift k (k_v ∈ {−1, 0, 1} on periodic variables) a meets b + 2πk with the shifted
-// bounds rounded outward, to a visitor: a superset of the pairs that share a point modulo
-// 2π (a pair met through two shifts may come twice). Held whole, M took 8 bytes a pair
-// (2.4·10^9 pairs for 3-RPR at eps 0.1).
-class NeighbourSweep {
+// The neighbourhood graph M, never held: a sweep hands each pair (a, b), a < b, such that
+// for some shift k (k_v ∈ {−1, 0, 1} on periodic variables) a meets b + 2πk with the
+// shifted bounds rounded outward, to a visitor: a superset of the pairs that share a point
+// modulo 2π (a pair met through two shifts may come twice). A missing pair could raise
+// the bound, so every sweep must find them all.
+class PairSweep {
  public:
-  NeighbourSweep(const OutBoxes& R, const std::vector<bool>& periodic, const Ival& two_pi);
+  virtual ~PairSweep() = default;
   // Visits every pair of M and returns how many it visited. Throws std::length_error beyond
   // `max_pairs` pairs: boxes that all overlap (one IMAGE for many cells) make M quadratic.
-  // With threads > 1 the strips are swept in parallel and `visit` is called under a lock, in
-  // an order that depends on the threads; the pairs and their count do not.
+  // With threads > 1 `visit` is called under a lock, in an order that depends on the
+  // threads; the pairs and their count do not.
+  virtual size_t run(const std::function<void(int, int)>& visit, size_t max_pairs = SIZE_MAX,
+                     int threads = 1) const = 0;
+};
+
+// The trusted sweep (bound.cpp): the boxes, and their copies shifted by ±2π if the sweep
+// variable is periodic, sorted by lower end on it; each overlapping pair is tested by the
+// rule itself, every shifted end computed in MPFI. Slower, and simple.
+class PlainSweep : public PairSweep {
+ public:
+  PlainSweep(const OutBoxes& R, const std::vector<bool>& periodic, const Ival& two_pi);
   size_t run(const std::function<void(int, int)>& visit, size_t max_pairs = SIZE_MAX,
-             int threads = 1) const;
+             int threads = 1) const override;
+
+ private:
+  struct Item {
+    double lo, hi;
+    int id, k;
+  };
+  const OutBoxes& R_;
+  const std::vector<bool>& periodic_;
+  const Ival& two_pi_;
+  std::vector<Item> items_;  // by lo
+};
+
+// The fast sweep (fast_sweep.cpp, speed layer): the same pairs, from items of floats
+// rounded outward, in strips of a second variable swept on T threads.
+class NeighbourSweep : public PairSweep {
+ public:
+  NeighbourSweep(const OutBoxes& R, const std::vector<bool>& periodic, const Ival& two_pi);
+  size_t run(const std::function<void(int, int)>& visit, size_t max_pairs = SIZE_MAX,
+             int threads = 1) const override;
   // Boxes whose shifted ends are held: those whose copy shifted by ±2π meets the hull.
   size_t seam_boxes() const { return P_ ? shifted_.size() / (2 * P_) : 0; }
 
@@ -482,7 +514,7 @@ class NeighbourSweep {
 // once per group of classes, a union-find per class of a group (at most 2^28 entries).
 // Throws std::length_error beyond `max_pairs` pairs, and when classes × (pairs + boxes)
 // exceeds 2^32 + 2^10 per box. `pairs`, if given, receives the number of pairs of M.
-long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_t max_pairs,
+long lower_bound(const OutBoxes& R, const PairSweep& M, uint32_t use, size_t max_pairs,
                  size_t* pairs = nullptr, int threads = 1);
 // Filtering: cut at the largest ratio of consecutive sizes; keep all if it is < 2.
 long filtered_count(const std::vector<int64_t>& sizes);

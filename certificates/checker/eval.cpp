@@ -31,7 +31,11 @@ Evaluator::Evaluator(const Model& m) : m_(m) {
   for (auto& d : der_) mpfi_set_si(d, 0);  // entries of variables a node does not mention stay 0
   cstat_.assign(N, 0);
   st_.assign(N, 0);
-  tc_.resize(N);
+  tc_of_.assign(N, -1);
+  int caches = 0;
+  for (const Node& n : m.nodes)
+    if ((n.op == Op::Sin || n.op == Op::Cos) && tc_of_[n.a] < 0) tc_of_[n.a] = caches++;
+  tc_.resize(size_t(caches));
   mpfi_const_pi(pi_);
   mpfi_mul_2ui(two_pi, pi_, 1);
   // Constant sub-expressions are evaluated once, with their definedness status.
@@ -90,7 +94,7 @@ void Evaluator::extremum(Ival& v, const Ival& a, double off, double lo, double h
 // sin and cos of an interval. Each end costs one correctly rounded mpfr_sin_cos in RNDN;
 // its ternary value says on which side of the exact value each result lies, so the
 // result and its neighbour enclose it. Wide or huge arguments go to MPFI.
-void Evaluator::sincos(const Ival& a, Ival& s, Ival& c) {
+void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
   const double lo = a.lo();
   const double hi = a.hi();
   if (!(hi - lo < 6.0) || !(std::fabs(lo) < 1e6) || !(std::fabs(hi) < 1e6)) {
@@ -99,19 +103,26 @@ void Evaluator::sincos(const Ival& a, Ival& s, Ival& c) {
     return;
   }
   for (int e = 0; e < 2; ++e) {
-    int t = mpfr_sin_cos(t1_.L(), t2_.L(), e ? a.R() : a.L(), MPFR_RNDN);
-    mpfr_set(t1_.R(), t1_.L(), MPFR_RNDN);
-    mpfr_set(t2_.R(), t2_.L(), MPFR_RNDN);
-    if ((t & 3) == 1) mpfr_nextbelow(t1_.L());  // rounded above the exact sine
-    if ((t & 3) == 2) mpfr_nextabove(t1_.R());
-    if ((t >> 2) == 1) mpfr_nextbelow(t2_.L());
-    if ((t >> 2) == 2) mpfr_nextabove(t2_.R());
+    mpfr_srcptr x = e ? a.R() : a.L();
+    int k = mpfr_equal_p(cache.end[0].L(), x) ? 0 : mpfr_equal_p(cache.end[1].L(), x) ? 1 : -1;
+    if (k < 0) {  // NaN, the initial end, equals nothing
+      k = cache.last ^= 1;
+      mpfi_set_fr(cache.end[k], x);
+      Ival &sk = cache.end_sin[k], &ck = cache.end_cos[k];
+      const int t = mpfr_sin_cos(sk.L(), ck.L(), x, MPFR_RNDN);
+      mpfr_set(sk.R(), sk.L(), MPFR_RNDN);
+      mpfr_set(ck.R(), ck.L(), MPFR_RNDN);
+      if ((t & 3) == 1) mpfr_nextbelow(sk.L());  // rounded above the exact sine
+      if ((t & 3) == 2) mpfr_nextabove(sk.R());
+      if ((t >> 2) == 1) mpfr_nextbelow(ck.L());
+      if ((t >> 2) == 2) mpfr_nextabove(ck.R());
+    }
     if (e == 0) {
-      mpfi_set(s, t1_);
-      mpfi_set(c, t2_);
+      mpfi_set(s, cache.end_sin[k]);
+      mpfi_set(c, cache.end_cos[k]);
     } else {
-      mpfi_union(s, s, t1_);
-      mpfi_union(c, c, t2_);
+      mpfi_union(s, s, cache.end_sin[k]);
+      mpfi_union(c, c, cache.end_cos[k]);
     }
   }
   extremum(s, a, 0.5, lo, hi);
@@ -119,9 +130,9 @@ void Evaluator::sincos(const Ival& a, Ival& s, Ival& c) {
 }
 
 void Evaluator::trig(bool cosine, int child, const Ival& a, Ival& r) {
-  TrigCache& c = tc_[child];
+  TrigCache& c = tc_[tc_of_[child]];
   if (!mpfr_equal_p(c.arg.L(), a.L()) || !mpfr_equal_p(c.arg.R(), a.R())) {  // NaN: never equal
-    sincos(a, c.sin, c.cos);
+    sincos(c, a, c.sin, c.cos);
     mpfi_set(c.arg, a);
   }
   mpfi_set(r, cosine ? c.cos : c.sin);

@@ -1,18 +1,14 @@
-// proof_batch.cpp — the interval proofs of a check on T threads. The record-by-record
-// check (main.cpp) reads every record and decides its structure itself, in order; each
+// proof_batch.cpp — speed layer: the interval proofs of a check on T threads. The record
+// rules (check.cpp) read every record and decide its structure themselves, in order; each
 // interval proof (a refutation, a Hansen–Sengupta step, a regularity test, a factor sign)
 // becomes a job of a batch. A batch runs on every thread, each with its own evaluator and
 // prover, and is then judged in record order, so the verdict, the record it names and its
 // reason are those of one thread, whatever T is: the first failed proof in record order
 // wins, and the work limit is charged job by job in record order as a sequential check
 // charges it.
-#include <atomic>
 #include <cstdlib>
-#include <condition_variable>
 #include <exception>
 #include <memory>
-#include <mutex>
-#include <thread>
 
 #include "checker.h"
 
@@ -45,31 +41,17 @@ struct ProofBatch::Job {
 
 ProofBatch::ProofBatch(const Model& m, int threads, uint64_t work_before)
     : work(work_before), prec_(mpfr_get_default_prec()), batch_(batch_size()) {
-  // Evaluators made here hold intervals of the certificate's precision; the helper threads
-  // set it as their own default for the temporaries they make (MPFR keeps it per thread).
   for (int t = 0; t < std::max(1, threads); ++t) {
     workers_.emplace_back(new Worker);
     workers_.back()->ev.reset(new Evaluator(m));
     workers_.back()->pr.reset(new Prover(*workers_.back()->ev));
   }
-  try {
-    for (int t = 1; t < int(workers_.size()); ++t) helpers_.emplace_back([this, t] { serve(t); });
-  } catch (...) {  // a thread that cannot start: stop those that did, then say so
-    stop_helpers();
-    throw;
-  }
 }
 
-ProofBatch::~ProofBatch() { stop_helpers(); }
-
-void ProofBatch::stop_helpers() {
-  {
-    std::lock_guard<std::mutex> lock(m_);
-    stop_ = true;
-  }
-  go_.notify_all();
+// The helpers finish the jobs they hold (which read the checker's members) before any of
+// it is gone, whatever was thrown.
+ProofBatch::~ProofBatch() {
   for (std::thread& h : helpers_) h.join();
-  helpers_.clear();
 }
 
 // Queues a job; a full batch starts on the helpers once the one before it is judged, and
@@ -101,47 +83,26 @@ void ProofBatch::work_on(int t) {
   }
 }
 
-void ProofBatch::serve(int t) {
-  mpfr_set_default_prec(prec_);
-  uint64_t seen = 0;
-  for (;;) {
-    {
-      std::unique_lock<std::mutex> lock(m_);
-      go_.wait(lock, [&] { return stop_ || round_ != seen; });
-      if (stop_) break;
-      seen = round_;
-    }
-    work_on(t);
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      if (--busy_ == 0) done_.notify_one();
-    }
-  }
-  mpfr_free_cache();  // this thread's constants (π) are its own
-}
-
-// The queued jobs become the running batch, on the helpers (without helpers, finish()
-// runs it).
+// The queued jobs become the running batch, on a helper thread per worker but the first
+// (finish() runs it on this thread too). The helpers take the certificate's precision as
+// their default for the temporaries they make (MPFR keeps it per thread).
 void ProofBatch::start() {
   running_.swap(jobs_);
   next_ = 0;
-  if (helpers_.empty() || running_.empty()) return;
-  {
-    std::lock_guard<std::mutex> lock(m_);
-    busy_ = int(helpers_.size());
-    ++round_;
-  }
-  go_.notify_all();
+  for (int t = 1; t < int(workers_.size()) && !running_.empty(); ++t)
+    helpers_.emplace_back([this, t] {
+      mpfr_set_default_prec(prec_);
+      work_on(t);
+      mpfr_free_cache();  // this thread's constants (π) are its own
+    });
 }
 
 // Completes the running batch (this thread helps), then judges it in record order.
 void ProofBatch::finish() {
   if (running_.empty()) return;
   work_on(0);
-  if (!helpers_.empty()) {
-    std::unique_lock<std::mutex> lock(m_);
-    done_.wait(lock, [&] { return busy_ == 0; });
-  }
+  for (std::thread& h : helpers_) h.join();
+  helpers_.clear();
   std::vector<Job> jobs;
   jobs.swap(running_);
   for (Job& j : jobs) {

@@ -23,8 +23,8 @@ cp "$root"/robots/*.robot "$root"/tests/models/*.robot "$work/corpus_model/"
   -dict="$here/model.dict" "$work/corpus_model" 2>&1 | tail -5
 
 # Certificate reader of check_cert, when its fuzz target exists.
-if [ -f "$root/certificates/checker/fuzz_cert_reader.cpp" ]; then
-  sh "$root/certificates/checker/build_fuzz.sh" "$work" "$flags"
+if [ -f "$root/certificates/checker/tests/fuzz/fuzz_cert_reader.cpp" ]; then
+  sh "$root/certificates/checker/tests/fuzz/build_fuzz.sh" "$work" "$flags"
   mkdir -p "$work/corpus_cert"
   cp "$root"/certificates/checker/tests/valid/*.cert "$work/corpus_cert/" 2>/dev/null || true
   "$work/fuzz_cert_reader" -max_total_time="$secs" -timeout=10 -max_len=65536 \

@@ -1,10 +1,10 @@
 // fuzz_cert_reader.cpp — libFuzzer target: the whole check of check_cert (reader, model
 // parser, proofs, graph) on arbitrary bytes, read through fmemopen. Built by build_fuzz.sh
-// with -DCHECK_CERT_NO_MAIN; any crash, leak, sanitizer report or hang is a bug. Mutations
+// from the checker's sources without cli.cpp; any crash, leak, sanitizer report or hang is a bug. Mutations
 // of the model text almost never keep `model BYTES SHA256` right, so when the input has
 // that record and an `end-model` line, the harness first makes it consistent: the parser
 // and the proofs then see mutated models too.
-#include "checker.h"
+#include "../../checker.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string s(reinterpret_cast<const char*>(data), size);
@@ -17,7 +17,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   FILE* f = s.empty() ? nullptr : fmemopen(&s[0], s.size(), "rb");
   cc::CheckOptions o;
   o.quiet = true;
-  cc::Verdict v;
-  if (f) cc::check_certificate(f, o, v);
+  if (f) cc::check_certificate(f, o);
   return 0;
 }

@@ -1,7 +1,8 @@
-// graph.cpp — union-find (path halving), the neighbourhood graph by sort-and-sweep (not
-// O(N²), and not 3^(periodic variables) copies: only the sweep dimension is shifted, the
-// other variables are tested shift by shift; its pairs go straight into the union-finds,
-// M is never held), the sign-separated lower bound and the filtering rule.
+// fast_sweep.cpp — speed layer: the neighbourhood graph M by a sort-and-sweep whose items
+// are floats rounded outward (a superset of the overlaps), in strips of a second variable
+// swept on T threads; not O(N²), and not 3^(periodic variables) copies: only the sweep
+// dimension is shifted, the other variables are tested shift by shift. Its pairs go
+// straight to the visitor; M is never held. PlainSweep (bound.cpp) finds the same pairs.
 #include "checker.h"
 
 #include <algorithm>
@@ -9,27 +10,11 @@
 #include <cfloat>
 #include <cmath>
 #include <exception>
-#include <numeric>
+#include <mutex>
 #include <thread>
 #include <utility>
 
 namespace cc {
-
-void UnionFind::reset(size_t n) {
-  parent.resize(n);
-  std::iota(parent.begin(), parent.end(), 0);
-}
-
-int UnionFind::find(int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
-void UnionFind::unite(int a, int b) {
-  a = find(a);
-  b = find(b);
-  if (a != b) parent[std::max(a, b)] = std::min(a, b);
-}
 
 // The largest float <= x (a double beyond the floats' range has no float conversion).
 static float float_down(double x) {
@@ -37,11 +22,6 @@ static float float_down(double x) {
   if (x > double(FLT_MAX)) return FLT_MAX;
   float f = float(x);
   return double(f) > x ? std::nextafter(f, -HUGE_VALF) : f;
-}
-
-void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x) {
-  mpfi_mul_si(t, two_pi, k);
-  mpfi_add_d(t, t, x);
 }
 
 NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& periodic,
@@ -225,78 +205,6 @@ size_t NeighbourSweep::run(const std::function<void(int, int)>& visit, size_t ma
   if (error) std::rethrow_exception(error);
   if (over) throw std::length_error("neighbourhood graph");
   return pairs;
-}
-
-long lower_bound(const OutBoxes& R, const NeighbourSweep& M, uint32_t use, size_t max_pairs,
-                 size_t* pairs, int threads) {
-  const size_t N = R.size();
-  const uint32_t full = use;
-  // Only the sign vectors s of solution boxes with every used sign verified can count (bit
-  // i of s set: factor i positive): at most N classes instead of 2^p.
-  std::vector<uint32_t> classes;
-  for (size_t b = 0; b < N; ++b)
-    if (R.solution[b] && ((R.pos[b] | R.neg[b]) & full) == full) classes.push_back(R.pos[b] & full);
-  std::sort(classes.begin(), classes.end());
-  classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
-  // A union-find over M per class: up to 2^20 classes (p = 20 user factors) on 10^5 boxes
-  // would take hours. A real certificate has a handful of classes. The steps, classes ×
-  // (pairs + boxes), may reach 2^32 + 2^10 per box: a fixed 2^32 rejected 3-RPR at eps 0.1
-  // (2 classes, 2.4·10^9 pairs), and a box's proofs cost more than 2^10 union-find steps.
-  const double budget = double(uint64_t(1) << 32) + 1024.0 * double(N);
-  if (double(classes.size()) * double(N) > budget) throw std::length_error("sign classes");
-  // Classes in groups of at most 32 (a bit mask per box) whose union-finds hold at most 2^28
-  // entries (1 GiB): one sweep of M per group, and one even without a class, so that every
-  // certificate meets the pair limit.
-  const size_t per_gib = (size_t(1) << 28) / std::max<size_t>(N, 1);
-  const size_t group = std::min<size_t>(32, std::max<size_t>(1, per_gib));
-  std::vector<uint8_t> counted(N);
-  long total = 0;
-  size_t seen = 0;
-  for (size_t g0 = 0; g0 == 0 || g0 < classes.size(); g0 += group) {
-    const size_t g = std::min(group, classes.size() - g0);
-    std::vector<UnionFind> uf(g);
-    std::vector<uint32_t> compat(N);  // bit c: box b is compatible with class g0 + c
-    for (size_t c = 0; c < g; ++c) {
-      const uint32_t s = classes[g0 + c];
-      uf[c].reset(N);
-      for (size_t b = 0; b < N; ++b)
-        if (!(R.neg[b] & s) && !(R.pos[b] & ~s & full)) compat[b] |= uint32_t(1) << c;
-    }
-    seen = M.run(
-        [&](int a, int b) {
-          for (uint32_t both = compat[a] & compat[b]; both; both &= both - 1)
-            uf[__builtin_ctz(both)].unite(a, b);
-        },
-        max_pairs, threads);
-    if (double(classes.size()) * double(seen + N) > budget) throw std::length_error("sign classes");
-    for (size_t c = 0; c < g; ++c) {
-      const uint32_t s = classes[g0 + c];
-      std::fill(counted.begin(), counted.end(), 0);
-      for (size_t b = 0; b < N; ++b) {
-        if (!R.solution[b] || (R.pos[b] & full) != s || (R.neg[b] & full) != (~s & full)) continue;
-        const int r = uf[c].find(int(b));
-        if (counted[r]) continue;
-        counted[r] = 1;
-        ++total;
-      }
-    }
-  }
-  if (pairs) *pairs = seen;
-  return total;
-}
-
-long filtered_count(const std::vector<int64_t>& sizes) {
-  if (sizes.size() <= 1) return long(sizes.size());
-  double best = 0;
-  long cut = long(sizes.size());
-  for (size_t i = 0; i + 1 < sizes.size(); ++i) {
-    double r = double(sizes[i]) / double(sizes[i + 1]);
-    if (r > best) {
-      best = r;
-      cut = long(i) + 1;
-    }
-  }
-  return best < 2 ? long(sizes.size()) : cut;
 }
 
 }  // namespace cc

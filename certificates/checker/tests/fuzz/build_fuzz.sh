@@ -1,0 +1,16 @@
+#!/bin/sh
+# build_fuzz.sh WORKDIR "FLAGS" — builds WORKDIR/fuzz_cert_reader, the libFuzzer target of
+# check_cert, with clang++ and FLAGS (e.g. -fsanitize=fuzzer,address,undefined) from the
+# checker's own sources (all but cli.cpp, its command line). Called by tests/fuzz/run_fuzz.sh.
+set -eu
+work=$1
+flags=$2
+here=$(cd "$(dirname "$0")" && pwd)
+src=$here/../..
+mkdir -p "$work"
+# shellcheck disable=SC2086 # FLAGS is a list of options
+clang++ -std=c++17 $flags "$here/fuzz_cert_reader.cpp" "$src/check.cpp" "$src/tree.cpp" \
+  "$src/sections.cpp" "$src/cert_reader.cpp" \
+  "$src/model.cpp" "$src/eval.cpp" "$src/proofs.cpp" "$src/bound.cpp" "$src/fast_sweep.cpp" \
+  "$src/proof_batch.cpp" "$src/compressed_input.cpp" -pthread \
+  -lmpfi -lmpfr -lgmp -lcrypto -lzstd -o "$work/fuzz_cert_reader"
