@@ -146,7 +146,9 @@ double parse_real(std::string_view s, long rec) {
     e = 10 * e + (s[i] - '0');
   }
   if (minus) e = -e;
-  const uint64_t mant = digits ? frac << (52 - 4 * digits) : 0;
+  // Only a well-formed fraction (1 to 13 digits) is shifted: a longer one would shift by a
+  // negative count.
+  const uint64_t mant = ok && digits ? frac << (52 - 4 * digits) : 0;
   if (normal) ok = ok && e >= -1022 && e <= 1023 && !(minus && e == 0);
   else ok = ok && (digits ? minus && e == -1022 : !minus && e == 0);
   if (!ok) malformed(rec, "bad real '" + std::string(s) + "' (expected a %a hexadecimal float)");
