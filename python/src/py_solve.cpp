@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
@@ -35,7 +36,8 @@ struct Progress {
   long processed = 0, solutions = 0, undecided = 0;
   double decided = 0;
   std::vector<std::pair<std::string, double>> phases;
-  bool changed = false;
+  // Set under `mu` by the run, read without it by the polling thread.
+  std::atomic<bool> changed{false};
 };
 
 struct SolveRequest {
