@@ -376,6 +376,7 @@ if [ -f "$TMP/runs/3rrr/summary.json" ]; then
   if [ $brc -ne 0 ]; then
     FAILURES+=("3-RRR beyond-the-paper summary failed (exit $brc): $(tail -n 3 "$TMP/runs/3rrr/beyond.log" | tr '\n' ' ')")
   fi
+fi
 if [ $KEEP_BOXES -eq 0 ]; then
   rm -f "$TMP"/runs/*/boxes.csv
 fi
@@ -395,8 +396,6 @@ T_END=$(now)
 } > "$TMP/run_info.txt"
 
 "$PY" "$SCRIPT_DIR/make_table.py" "$TMP" "${KEYS[@]}"
-
-fi
 
 # ------------------------------------------------------------------ publish
 trap '' INT TERM HUP

@@ -57,6 +57,12 @@ add_test(NAME paper_repro.quick
          COMMAND ${PROJECT_SOURCE_DIR}/paper_repro/run_all.sh --quick --build ${PROJECT_BINARY_DIR}
                  --out ${CMAKE_CURRENT_BINARY_DIR}/paper_repro_quick)
 set_tests_properties(paper_repro.quick PROPERTIES TIMEOUT 1200 LABELS "acceptance;slow")
+# Without the full 3-RRR among the robots, the table and run_info.txt are still written.
+add_test(NAME paper_repro.only_prrp
+         COMMAND sh -c "\"$0\" --quick --only prrp --build \"$1\" --out \"$2\" && test -s \"$2/table1.md\" && test -s \"$2/run_info.txt\" && test ! -e \"$2/beyond_3rrr.md\""
+                 ${PROJECT_SOURCE_DIR}/paper_repro/run_all.sh ${PROJECT_BINARY_DIR}
+                 ${CMAKE_CURRENT_BINARY_DIR}/paper_repro_only_prrp)
+set_tests_properties(paper_repro.only_prrp PROPERTIES TIMEOUT 120 LABELS cli)
 
 # Runs stopped after their search, each partial certificate checked by check_cert.
 if(TARGET check_cert)
