@@ -61,11 +61,10 @@ def row(run_dir, sheets_volume):
     stopped = f", stopped by {s['stopped_by']}" if s.get("stopped_by") else ""
     check, checked_bound = checked(run_dir)
     return dict(eps=s["eps"], boxes=b["total"], solution=b["solution"],
-                unexplored=b["unexplored"], neighbours=s["links"]["neighbor"],
+                neighbours=s["links"]["neighbor"],
                 links=s["links"]["certified"], csncs=c["count"], filtered=c["filtered"],
                 bound=c["separated_lower_bound"], checked_bound=checked_bound,
-                time=s["time_seconds"],
-                memory=s["peak_memory_mib"], complete=s["complete"], stopped=stopped,
+                time=s["time_seconds"], memory=s["peak_memory_mib"], stopped=stopped,
                 volume=vol, share=(vol / sheets_volume if vol is not None and sheets_volume else None),
                 check=check)
 

@@ -129,10 +129,9 @@ def count(n, x3_slice=None):
                 axes = [g, g, t][:len(where)]
                 where = [(float(a[i]), float(a[j])) for a, (i, j) in zip(axes, where)]
             classes.append(dict(mode=mode, fq_signs=fq_signs, det_fx=sign,
-                                sizes=[c for c, _ in comps],
-                                thick=sum(1 for _, t in comps if t),
-                                thick_sizes=[c for c, t in comps if t],
-                                volume=sum(c for c, _ in comps) * cell,
+                                sizes=[cells for cells, _ in comps],
+                                thick=sum(1 for _, is_thick in comps if is_thick),
+                                volume=sum(cells for cells, _ in comps) * cell,
                                 second_where=where))
     return classes
 
