@@ -41,13 +41,10 @@ struct StringWriter : LeWriter {
 // (i32, -1 for undecided), status (i8: 0 solution, 1 + the undecided kind), by box id.
 std::string box_bytes(const LoadedResult& r, size_t& boxes) {
   const size_t k = r.model.pose.size();
-  struct Row { uint32_t id; bool sol; size_t i; };
+  struct Row { bool sol; size_t i; };
   std::vector<Row> rows;
-  for (size_t i = 0; i < r.index.solutions.size(); ++i)
-    rows.push_back({r.index.solutions[i].id, true, i});
-  for (size_t i = 0; i < r.index.undecided.size(); ++i)
-    rows.push_back({r.index.undecided[i].id, false, i});
-  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.id < b.id; });
+  rows.reserve(r.index.solutions.size() + r.index.undecided.size());
+  for_each_box_by_id(r.index, [&](bool sol, size_t i) { rows.push_back({sol, i}); });
   boxes = rows.size();
   StringWriter w;
   auto ends = [&](bool upper) {

@@ -361,8 +361,10 @@ ResultIndex decode_result_index(const std::string& bytes, const std::string& wha
   }
   uint32_t U = r.count(5 + 16 * size_t(idx.n));
   idx.undecided.resize(U);
-  for (auto& u : idx.undecided) {
+  for (uint32_t i = 0; i < U; ++i) {
+    IndexUndecidedBox& u = idx.undecided[i];
     u.id = r.u32();
+    if (i > 0 && u.id <= idx.undecided[i - 1].id) r.fail("undecided box ids not increasing");
     u.kind = r.u8();
     if (u.kind > 3) r.fail("bad undecided kind");
     u.lo.resize(idx.n);

@@ -62,9 +62,22 @@ struct ResultIndex {
   std::vector<IndexFactor> factors;
   uint32_t csnc_count = 0, filtered = 0;
   std::vector<IndexSolutionBox> solutions;  // by increasing id
-  std::vector<IndexUndecidedBox> undecided;
+  std::vector<IndexUndecidedBox> undecided;  // by increasing id
   std::vector<IndexLink> links;
 };
+
+// Every box of the index by increasing id, merging the two lists: f(true, i) for
+// solutions[i], f(false, i) for undecided[i].
+template <class F>
+void for_each_box_by_id(const ResultIndex& idx, F&& f) {
+  size_t i = 0, j = 0;
+  while (i < idx.solutions.size() || j < idx.undecided.size()) {
+    const bool solution = j == idx.undecided.size() ||
+                          (i < idx.solutions.size() && idx.solutions[i].id < idx.undecided[j].id);
+    if (solution) f(true, i++);
+    else f(false, j++);
+  }
+}
 
 // Gathers the index from a finished search. When the link proofs were not kept
 // (--no-cert), the witnesses are recomputed with certify_link's rule (the midpoint of

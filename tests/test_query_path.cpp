@@ -420,6 +420,12 @@ TEST(ResultIndex, RoundTripsExactlyAndRejectsDamage) {
   std::string magic = bytes;
   magic[0] = 'A';
   EXPECT_NE(message(magic).find("bad magic"), std::string::npos);
+  // Readers merge the two box lists by id, so each must be in increasing id order.
+  ResultIndex swapped = r.index;
+  ASSERT_GT(swapped.undecided.size(), 1u);
+  std::swap(swapped.undecided[0], swapped.undecided[1]);
+  EXPECT_NE(message(encode_result_index(swapped)).find("undecided box ids not increasing"),
+            std::string::npos);
 }
 
 TEST(ResultIndex, RecomputedWitnessesAreTheRecordedOnes) {

@@ -53,7 +53,7 @@ pyb::dict box_arrays(const PyResult& p) {
   pyb::array_t<double> lo({n, nv}), hi({n, nv});
   pyb::array_t<int8_t> status(n);
   pyb::array_t<int32_t> csnc(n);
-  const size_t np = ns > 0 ? r.index.solutions[0].signs.size() : 0;
+  const size_t np = r.index.factors.size();  // each solution box has one sign per factor
   pyb::array_t<int8_t> signs({n, np});
   auto sgv = signs.mutable_unchecked<2>();
   auto idv = id.mutable_unchecked<1>();
@@ -62,18 +62,17 @@ pyb::dict box_arrays(const PyResult& p) {
   auto stv = status.mutable_unchecked<1>();
   auto csv = csnc.mutable_unchecked<1>();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  size_t i = 0, j = 0, row = 0;
-  while (i < ns || j < nu) {
-    const bool sol = j >= nu || (i < ns && r.index.solutions[i].id < r.index.undecided[j].id);
-    if (sol) {
-      const IndexSolutionBox& s = r.index.solutions[i++];
+  size_t row = 0;
+  for_each_box_by_id(r.index, [&](bool solution, size_t i) {
+    if (solution) {
+      const IndexSolutionBox& s = r.index.solutions[i];
       idv(row) = s.id;
       for (size_t v = 0; v < nv; ++v) lov(row, v) = s.lo[v], hiv(row, v) = s.hi[v];
       stv(row) = kSolution;
       csv(row) = s.csnc;
       for (size_t k = 0; k < np; ++k) sgv(row, k) = int8_t(s.signs[k]);
     } else {
-      const IndexUndecidedBox& u = r.index.undecided[j++];
+      const IndexUndecidedBox& u = r.index.undecided[i];
       idv(row) = u.id;
       for (size_t v = 0; v < nv; ++v) lov(row, v) = nan, hiv(row, v) = nan;
       for (size_t k = 0; k < r.model.pose.size(); ++k) {
@@ -85,7 +84,7 @@ pyb::dict box_arrays(const PyResult& p) {
       for (size_t k = 0; k < np; ++k) sgv(row, k) = 0;
     }
     ++row;
-  }
+  });
   pyb::dict d;
   d["id"] = id;
   d["lower"] = lo;
