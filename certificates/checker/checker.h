@@ -237,6 +237,7 @@ struct WorkLimit : std::runtime_error {
 class Evaluator {
  public:
   explicit Evaluator(const Model& m);
+  ~Evaluator();
   const Model& model() const { return m_; }
   int nv() const { return int(m_.vars.size()); }
 
@@ -297,6 +298,10 @@ class Evaluator {
   std::vector<TrigCache> tc_;  // one per argument of sin or cos
   std::vector<int> tc_of_;     // per node: its cache in tc_, -1 if none
   void sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c);
+  // Arb's balls for the ends of sin, cos, asin and acos (eval.cpp): rigorous, and at the
+  // usual precisions several times cheaper than MPFR's correctly rounded functions.
+  struct Balls;
+  std::unique_ptr<Balls> balls_;
   void extremum(Ival& v, const Ival& a, double off, double lo, double hi);
   Ival pi_;
   uint64_t dirs_ = 0;

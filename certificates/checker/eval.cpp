@@ -3,11 +3,63 @@
 // steps intersect each child with a superset of its values compatible with the parent.
 #include "checker.h"
 
+#include <arb.h>
+
 #include <algorithm>
 #include <cmath>
 
 namespace cc {
 
+// Enclosures of f(x) (and g(x)) at an end x of an interval, from Arb's balls rounded
+// outward to the certificate's precision p. A ball whose rounding is more than one ulp
+// wide is recomputed at twice the precision (as MPFR's Ziv loop does), up to 16 p bits: a
+// value within a hair of a p-bit number (sin x for tiny x, cos x near 1) would otherwise
+// be two ulps wide where MPFR's correctly rounded value and its neighbour are one, and a
+// wider enclosure can fail a claim the solver made with little slack.
+struct Evaluator::Balls {
+  arb_t x, f, g;
+  arf_t end;
+  const slong p = slong(mpfr_get_default_prec());
+  Ival next;
+  Balls() {
+    arb_init(x);
+    arb_init(f);
+    arb_init(g);
+    arf_init(end);
+  }
+  ~Balls() {
+    arb_clear(x);
+    arb_clear(f);
+    arb_clear(g);
+    arf_clear(end);
+  }
+  // F := fn's ball f rounded outward, G := its ball g (when given).
+  template <class Fn>
+  void compute(mpfr_srcptr v, Fn fn, Ival& F, Ival* G) {
+    arf_set_mpfr(end, v);
+    arb_set_arf(x, end);
+    for (slong prec = p + 16;; prec *= 2) {
+      fn(prec);
+      get(f, F);
+      if (G) get(g, *G);
+      if (prec >= 16 * p || (tight(F) && (!G || tight(*G)))) return;
+    }
+  }
+  // out := the ball b rounded outward; the entire line if b is not finite.
+  void get(const arb_t b, Ival& out) {
+    arb_get_lbound_arf(end, b, 2 * p);
+    arf_get_mpfr(out.L(), end, MPFR_RNDD);
+    arb_get_ubound_arf(end, b, 2 * p);
+    arf_get_mpfr(out.R(), end, MPFR_RNDU);
+    if (mpfi_nan_p(out)) out.entire();
+  }
+  // At most one ulp wide.
+  bool tight(const Ival& a) {
+    mpfr_set(next.L(), a.L(), MPFR_RNDN);
+    mpfr_nextabove(next.L());
+    return mpfr_lessequal_p(a.R(), next.L());
+  }
+};
 
 // The status of a variable's interval: 2 empty, 0 bounded, 1 unbounded.
 static int var_status(const Ival& x) {
@@ -23,7 +75,9 @@ static int pole(Ival& r, const Ival& d) {
   return 1;
 }
 
-Evaluator::Evaluator(const Model& m) : m_(m) {
+Evaluator::~Evaluator() = default;
+
+Evaluator::Evaluator(const Model& m) : m_(m), balls_(new Balls) {
   const size_t N = m.nodes.size();
   val_.resize(N);
   cval_.resize(N);
@@ -91,9 +145,8 @@ void Evaluator::extremum(Ival& v, const Ival& a, double off, double lo, double h
   }
 }
 
-// sin and cos of an interval. Each end costs one correctly rounded mpfr_sin_cos in RNDN;
-// its ternary value says on which side of the exact value each result lies, so the
-// result and its neighbour enclose it. Wide or huge arguments go to MPFI.
+// sin and cos of an interval: the hull of Arb's enclosures at both ends, widened to ±1
+// where an extremum may lie inside. Wide or huge arguments go to MPFI.
 void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
   const double lo = a.lo();
   const double hi = a.hi();
@@ -108,14 +161,10 @@ void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
     if (k < 0) {  // NaN, the initial end, equals nothing
       k = cache.last ^= 1;
       mpfi_set_fr(cache.end[k], x);
-      Ival &sk = cache.end_sin[k], &ck = cache.end_cos[k];
-      const int t = mpfr_sin_cos(sk.L(), ck.L(), x, MPFR_RNDN);
-      mpfr_set(sk.R(), sk.L(), MPFR_RNDN);
-      mpfr_set(ck.R(), ck.L(), MPFR_RNDN);
-      if ((t & 3) == 1) mpfr_nextbelow(sk.L());  // rounded above the exact sine
-      if ((t & 3) == 2) mpfr_nextabove(sk.R());
-      if ((t >> 2) == 1) mpfr_nextbelow(ck.L());
-      if ((t >> 2) == 2) mpfr_nextabove(ck.R());
+      Balls& B = *balls_;
+      B.compute(
+          x, [&B](slong prec) { arb_sin_cos(B.f, B.g, B.x, prec); }, cache.end_sin[k],
+          &cache.end_cos[k]);
     }
     if (e == 0) {
       mpfi_set(s, cache.end_sin[k]);
@@ -492,13 +541,16 @@ bool Evaluator::backward(int id, Ival* box) {
   return true;
 }
 
-// out := enclosure of s·asin(y) + cπ (sin) or s·acos(y) + cπ (cos): one correctly rounded
-// RNDN call whose ternary value tells on which side the exact value lies.
+// out := enclosure of s·asin(y) + cπ (sin) or s·acos(y) + cπ (cos), from Arb's ball.
 void Evaluator::branch_inverse(Op op, mpfr_srcptr y, int s, double c, Ival& out) {
-  int t = op == Op::Sin ? mpfr_asin(out.L(), y, MPFR_RNDN) : mpfr_acos(out.L(), y, MPFR_RNDN);
-  mpfr_set(out.R(), out.L(), MPFR_RNDN);
-  if (t > 0) mpfr_nextbelow(out.L());
-  if (t < 0) mpfr_nextabove(out.R());
+  Balls& B = *balls_;
+  B.compute(
+      y,
+      [&B, op](slong prec) {
+        if (op == Op::Sin) arb_asin(B.f, B.x, prec);
+        else arb_acos(B.f, B.x, prec);
+      },
+      out, nullptr);
   if (s < 0) mpfi_neg(out, out);
   mpfi_mul_d(t3_, pi_, c);
   mpfi_add(out, out, t3_);

@@ -6,6 +6,8 @@
 // reason are those of one thread, whatever T is: the first failed proof in record order
 // wins, and the work limit is charged job by job in record order as a sequential check
 // charges it.
+#include <flint/flint.h>
+
 #include <cstdlib>
 #include <exception>
 #include <memory>
@@ -93,7 +95,8 @@ void ProofBatch::start() {
     helpers_.emplace_back([this, t] {
       mpfr_set_default_prec(prec_);
       work_on(t);
-      mpfr_free_cache();  // this thread's constants (π) are its own
+      mpfr_free_cache();  // this thread's constants (π) are its own,
+      flint_cleanup();    // and so are Arb's
     });
 }
 
