@@ -44,6 +44,7 @@ endif()
 # itself links neither core/ nor proofs/).
 add_executable(test_evaluator_differential test_evaluator_differential.cpp
   ${PROJECT_SOURCE_DIR}/certificates/checker/model.cpp
+  ${PROJECT_SOURCE_DIR}/certificates/checker/interval.cpp
   ${PROJECT_SOURCE_DIR}/certificates/checker/eval.cpp)
 target_link_libraries(test_evaluator_differential PRIVATE aspects_core GTest::gtest_main)
 target_compile_definitions(test_evaluator_differential PRIVATE

@@ -44,8 +44,8 @@ std::vector<std::pair<int, int>> brute_force(const cc::OutBoxes& R,
 // 2π, enclosed at the default precision.
 cc::Ival make_two_pi() {
   cc::Ival two_pi;
-  mpfi_const_pi(two_pi);
-  mpfi_mul_ui(two_pi, two_pi, 2);
+  cc::const_pi(two_pi);
+  cc::add(two_pi, two_pi, two_pi);
   return two_pi;
 }
 

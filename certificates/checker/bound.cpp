@@ -26,8 +26,8 @@ void UnionFind::unite(int a, int b) {
 }
 
 void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x) {
-  mpfi_mul_si(t, two_pi, k);
-  mpfi_add_d(t, t, x);
+  mul_d(t, two_pi, k);
+  add_d(t, t, x);
 }
 
 // The rule of FORMAT.md for a < b: on every variable v, a_v meets b_v + 2πk for some k

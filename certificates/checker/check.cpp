@@ -47,7 +47,7 @@ void Checker::read_model() {
   if (out.model_sha != sha) rejected(model_rec, "SHA-256 of the embedded model does not match");
   const int64_t prec = rd.expect({"precision"}, 1).integer();
   if (prec < 24 || prec > 4096) malformed(rec(), "precision out of range 24..4096");
-  mpfr_set_default_prec(mpfr_prec_t(prec));
+  set_interval_precision(mpfr_prec_t(prec), doubles);
   try {
     m = parse_model(text);
     // A limit of the checker, not of the format: the evaluator keeps about nodes·(variables
@@ -74,8 +74,8 @@ void Checker::read_bounds(long model_rec) {
     const std::string what = "embedded model: ";
     if (!ev->constant(x.lo, dlo[v]) || !ev->constant(x.hi, dhi[v]))
       malformed(model_rec, what + "domain bound of '" + x.name + "' is not a finite number");
-    const bool reversed = mpfr_cmp(dlo[v].L(), dhi[v].R()) > 0;
-    if (reversed || mpfr_cmp(dlo[v].R(), dhi[v].L()) > 0)
+    const bool reversed = less(dhi[v], Hi, dlo[v], Lo);
+    if (reversed || less(dhi[v], Lo, dlo[v], Hi))
       malformed(model_rec, what + "empty or reversed domain of '" + x.name + "'");
     // Exactly, not by intervals: `[-3.1415926, 3.1415926] periodic` passes an interval test
     // at 24 bits (and a longer decimal at any precision) and leaves a gap at the seam.
@@ -193,6 +193,7 @@ void Checker::run(const CheckOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
     work_base = std::max(10, std::min(40, std::atoi(e)));
+  doubles = !o.trusted_only;
   header();
   threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   // Each thread holds an evaluator of up to 2^22 units (read_model): at most 2^25 units in

@@ -23,10 +23,10 @@ inline void put(Box& b, int i, double lo, double hi) {
 // lo <= a and b <= hi: [a, b] inside [lo, hi], on exact doubles.
 inline bool within(double lo, double hi, double a, double b) { return lo <= a && b <= hi; }
 
-// y ⊆ int [lo, hi] (strict) or y ⊆ [lo, hi], comparing the MPFI ends with exact doubles.
+// y ⊆ int [lo, hi] (strict) or y ⊆ [lo, hi], comparing the exact ends with exact doubles.
 inline bool inside(const Ival& y, double lo, double hi, bool strict) {
-  const int a = mpfr_cmp_d(y.L(), lo);
-  const int b = mpfr_cmp_d(y.R(), hi);
+  const int a = cmp(y, Lo, lo);
+  const int b = cmp(y, Hi, hi);
   return strict ? a > 0 && b < 0 : a >= 0 && b <= 0;
 }
 
@@ -51,6 +51,7 @@ struct Checker {
   std::tuple<long, long, long> last_witness{-1, -1, -1};  // (CSNC, A, B)
   std::tuple<long, long, long> last_assembly{-1, -1, -1};  // (CSNC, A, B)
   int work_base = 29;
+  bool doubles = true;  // intervals of doubles at 53 bits (off with --trusted-only)
   size_t pairs_ = 0;  // pairs of M, for the statistics
   double graph_seconds_ = 0;  // building and sweeping M, for the statistics
   // Last, so that it is destroyed first: its helper threads finish the proofs they hold
@@ -101,19 +102,20 @@ struct Checker {
   // hi - lo >= 2π, proved: a periodic root cell then covers every angle (a shorter one,
   // declared with a rounded pi, would leave a gap that splits an aspect at the seam).
   bool spans_period(double lo, double hi) {
-    Ival w;
-    mpfi_set_d(w, hi);
-    mpfi_sub_d(w, w, lo);
-    return mpfr_cmp(w.L(), ev->two_pi.R()) >= 0;
+    Ival w, l;
+    w.set(hi, hi);
+    l.set(lo, lo);
+    sub(w, w, l);
+    return !less(w, Lo, ev->two_pi, Hi);
   }
   // Variable v of `box` meets the inner enclosure of its declared domain.
   bool meets_domain(const double* box, int v) const {
-    const bool lo_below = mpfr_cmp_d(dlo[v].R(), box[2 * v + 1]) <= 0;
-    return lo_below && mpfr_cmp_d(dhi[v].L(), box[2 * v]) >= 0;
+    const bool lo_below = cmp(dlo[v], Hi, box[2 * v + 1]) <= 0;
+    return lo_below && cmp(dhi[v], Lo, box[2 * v]) >= 0;
   }
   // [lo, hi] lies in the inner enclosure of the declared domain of v.
   bool within_domain(int v, double lo, double hi) const {
-    return mpfr_cmp_d(dlo[v].R(), lo) <= 0 && mpfr_cmp_d(dhi[v].L(), hi) >= 0;
+    return cmp(dlo[v], Hi, lo) <= 0 && cmp(dhi[v], Lo, hi) >= 0;
   }
   std::string show(const Box& b) const {  // a box, for messages
     std::string s;

@@ -1,7 +1,7 @@
 // checker.h — every declaration of check_cert, the independent checker of the certificates
 // of `aspects solve` (FORMAT.md is the specification). It shares no code with core/ or
 // proofs/. The trusted core, which alone decides a verdict: the reader (cert_reader.cpp,
-// compressed_input.cpp), the model parser (model.cpp), the MPFI evaluator (eval.cpp), the
+// compressed_input.cpp), the model parser (model.cpp), the interval type (interval.cpp), the evaluator (eval.cpp), the
 // proofs on one box (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp,
 // sections.cpp) and the graph M with the bound (bound.cpp). The optional speed layer,
 // tested against the core (`--trusted-only` turns it off): proofs on T threads
@@ -9,7 +9,6 @@
 // (fast_sweep.cpp). The command line and its output: cli.cpp.
 #pragma once
 
-#include <mpfi.h>
 #include <openssl/evp.h>
 
 #include <algorithm>
@@ -25,6 +24,8 @@
 #include <thread>
 #include <utility>
 #include <vector>
+
+#include "interval.h"
 
 namespace cc {
 
@@ -120,48 +121,6 @@ struct Verdict {
 };
 
 Verdict check_certificate(FILE* f, const CheckOptions& o);
-
-// ---- The only interval type: an owning wrapper around one MPFI interval at the
-// certificate's precision (mpfr_set_default_prec is set once, before any Ival exists), plus
-// the few endpoint helpers the checker needs. Every interval result that feeds a verdict is
-// produced by an MPFI operation (outward rounded); the helpers only read endpoints with
-// explicit directed rounding.
-struct Ival {
-  mpfi_t v;
-  Ival() { mpfi_init(v); }
-  Ival(const Ival& o) { mpfi_init2(v, mpfi_get_prec(o.v)); mpfi_set(v, o.v); }
-  Ival& operator=(const Ival& o) {
-    if (this != &o) mpfi_set(v, o.v);
-    return *this;
-  }
-  ~Ival() { mpfi_clear(v); }
-  operator mpfi_ptr() { return v; }
-  operator mpfi_srcptr() const { return v; }
-  mpfr_ptr L() { return &v->left; }
-  mpfr_ptr R() { return &v->right; }
-  mpfr_srcptr L() const { return &v->left; }
-  mpfr_srcptr R() const { return &v->right; }
-  // Endpoints as doubles, rounded outward (lo down, hi up).
-  double lo() const { return mpfr_get_d(&v->left, MPFR_RNDD); }
-  double hi() const { return mpfr_get_d(&v->right, MPFR_RNDU); }
-  void set(double lo, double hi) { mpfi_interv_d(v, lo, hi); }
-  void entire() { mpfr_set_inf(&v->left, -1); mpfr_set_inf(&v->right, 1); }
-  bool empty() const { return mpfi_nan_p(v) || mpfi_is_empty(v); }
-  bool bounded() const { return !mpfi_nan_p(v) && mpfi_bounded_p(v); }
-  bool has_zero() const { return mpfi_has_zero(v) > 0; }
-  // Certain sign: +1 when lo > 0, -1 when hi < 0, else 0.
-  int sign() const {
-    if (empty()) return 0;
-    if (mpfr_sgn(&v->left) > 0) return 1;
-    if (mpfr_sgn(&v->right) < 0) return -1;
-    return 0;
-  }
-  // this ∩= o; false when the result is empty.
-  bool meet(mpfi_srcptr o) {
-    mpfi_intersect(v, v, o);
-    return !empty();
-  }
-};
 
 // ---- A robot model (model.cpp): an expression DAG whose children always have smaller ids
 // than their parents (so increasing id order is a forward evaluation order), the variables
@@ -278,7 +237,7 @@ class Evaluator {
   bool backward(int id, Ival* box);
   bool monotone_projection(Op op, const Ival& r, Ival& a, const Ival& fa);
   bool project_general(Op op, const Ival& r, Ival& a);
-  void branch_inverse(Op op, mpfr_srcptr y, int s, double c, Ival& out);
+  void branch_inverse(Op op, const Ival& r, End e, int s, double c, Ival& out);
   bool hull_both(Ival& a, const Ival& s);  // a ∩= (s ∪ −s)
   bool meet_nonnegative(Ival& r);
   bool project_square(Ival& r, Ival& a);
@@ -287,6 +246,15 @@ class Evaluator {
   std::vector<Ival> val_, der_, cval_;
   // Per node: 0 defined (and finite) on the whole box, 1 partial or unbounded, 2 nowhere.
   std::vector<int> cstat_, st_;  // constant nodes (once), every node (last evaluation)
+  // Incremental evaluation: a node is recomputed only when a variable it mentions changed
+  // since it was computed (the cells of a search tree and their slabs differ in one or two
+  // variables). Times of a clock: of each node's computation (0: not valid), of each
+  // variable's last change, and the intervals the last evaluation saw.
+  uint64_t clock_ = 1;
+  std::vector<uint64_t> stamp_, changed_at_;
+  std::vector<Ival> seen_;
+  void note_changes(const Ival* box);
+  bool fresh(int id) const;
   // Caches of sin and cos per argument node: MPFR trigonometry is the costly part.
   // sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit the last argument;
   // a contraction moves one end at a time, and the last two ends keep the other one.

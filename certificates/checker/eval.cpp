@@ -20,44 +20,43 @@ struct Evaluator::Balls {
   arb_t x, f, g;
   arf_t end;
   const slong p = slong(mpfr_get_default_prec());
-  Ival next;
+  mpfr_t m;  // an end, exactly
   Balls() {
     arb_init(x);
     arb_init(f);
     arb_init(g);
     arf_init(end);
+    mpfr_init2(m, std::max<slong>(p, 53));
   }
   ~Balls() {
     arb_clear(x);
     arb_clear(f);
     arb_clear(g);
     arf_clear(end);
+    mpfr_clear(m);
   }
   // F := fn's ball f rounded outward, G := its ball g (when given).
   template <class Fn>
-  void compute(mpfr_srcptr v, Fn fn, Ival& F, Ival* G) {
-    arf_set_mpfr(end, v);
+  void compute(const Ival& a, End e, Fn fn, Ival& F, Ival* G) {
+    get_end(m, a, e);
+    arf_set_mpfr(end, m);
     arb_set_arf(x, end);
     for (slong prec = p + 16;; prec *= 2) {
       fn(prec);
       get(f, F);
       if (G) get(g, *G);
-      if (prec >= 16 * p || (tight(F) && (!G || tight(*G)))) return;
+      if (prec >= 16 * p || (one_ulp(F) && (!G || one_ulp(*G)))) return;
     }
   }
   // out := the ball b rounded outward; the entire line if b is not finite.
   void get(const arb_t b, Ival& out) {
     arb_get_lbound_arf(end, b, 2 * p);
-    arf_get_mpfr(out.L(), end, MPFR_RNDD);
+    arf_get_mpfr(m, end, MPFR_RNDD);
+    set_end(out, Lo, m);
     arb_get_ubound_arf(end, b, 2 * p);
-    arf_get_mpfr(out.R(), end, MPFR_RNDU);
-    if (mpfi_nan_p(out)) out.entire();
-  }
-  // At most one ulp wide.
-  bool tight(const Ival& a) {
-    mpfr_set(next.L(), a.L(), MPFR_RNDN);
-    mpfr_nextabove(next.L());
-    return mpfr_lessequal_p(a.R(), next.L());
+    arf_get_mpfr(m, end, MPFR_RNDU);
+    set_end(out, Hi, m);
+    if (out.nan()) out.entire();
   }
 };
 
@@ -70,7 +69,7 @@ static int var_status(const Ival& x) {
 // A divisor (or the base of a negative power) that contains 0: the result is defined nowhere
 // when it is [0, 0] (status 2), else nothing is known of it (the entire line, status 1).
 static int pole(Ival& r, const Ival& d) {
-  if (mpfr_zero_p(d.L()) && mpfr_zero_p(d.R())) return 2;
+  if (d.is_zero()) return 2;
   r.entire();
   return 1;
 }
@@ -82,16 +81,19 @@ Evaluator::Evaluator(const Model& m) : m_(m), balls_(new Balls) {
   val_.resize(N);
   cval_.resize(N);
   der_.resize(N * m.vars.size());
-  for (auto& d : der_) mpfi_set_si(d, 0);  // entries of variables a node does not mention stay 0
+  for (auto& d : der_) set_si(d, 0);  // entries of variables a node does not mention stay 0
   cstat_.assign(N, 0);
   st_.assign(N, 0);
   tc_of_.assign(N, -1);
+  stamp_.assign(N, 0);
+  seen_.resize(m.vars.size());
+  changed_at_.assign(m.vars.size(), 0);
   int caches = 0;
   for (const Node& n : m.nodes)
     if ((n.op == Op::Sin || n.op == Op::Cos) && tc_of_[n.a] < 0) tc_of_[n.a] = caches++;
   tc_.resize(size_t(caches));
-  mpfi_const_pi(pi_);
-  mpfi_mul_2ui(two_pi, pi_, 1);
+  const_pi(pi_);
+  add(two_pi, pi_, pi_);
   // Constant sub-expressions are evaluated once, with their definedness status.
   for (size_t id = 0; id < N; ++id) {
     const Node& n = m.nodes[id];
@@ -110,22 +112,21 @@ Evaluator::Evaluator(const Model& m) : m_(m), balls_(new Balls) {
 
 bool Evaluator::constant(int id, Ival& out) const {
   if (m_.nodes[id].dep || cstat_[id] != 0) return false;
-  mpfi_set(out, cval_[id]);
+  out = cval_[id];
   return true;
 }
 
 void Evaluator::power(Ival& r, const Ival& a, int k) {
   const unsigned long m = (unsigned long)(k < 0 ? -k : k);
   if (m == 0) {
-    mpfi_set_si(r, 1);
+    set_si(r, 1);
     return;
   }
   // x^m is monotone in |x| (m even) or in x (m odd): power the ends with directed rounding.
-  mpfi_set(t4_, a);
-  if (m % 2 == 0) mpfi_abs(t4_, a);
-  mpfr_pow_ui(r.L(), t4_.L(), m, MPFR_RNDD);
-  mpfr_pow_ui(r.R(), t4_.R(), m, MPFR_RNDU);
-  if (k < 0) mpfi_inv(r, r);  // callers guarantee 0 is not in a
+  t4_ = a;
+  if (m % 2 == 0) abs(t4_, a);
+  pow_ui(r, t4_, m);
+  if (k < 0) inv(r, r);  // callers guarantee 0 is not in a
 }
 
 // Widens v (an enclosure of sin or cos on a) to ±1 where an extremum t = (j + off)π may
@@ -138,10 +139,10 @@ void Evaluator::extremum(Ival& v, const Ival& a, double off, double lo, double h
   for (double j = std::floor(lo / PI - off) - 1; j <= std::ceil(hi / PI - off) + 1; ++j) {
     double t = (j + off) * PI;
     if (t < lo - margin || t > hi + margin) continue;
-    mpfi_mul_d(t3_, pi_, j + off);
-    if (mpfr_cmp(t3_.R(), a.L()) < 0 || mpfr_cmp(t3_.L(), a.R()) > 0) continue;
-    if (std::fmod(std::fabs(j), 2.0) == 0) mpfr_set_si(v.R(), 1, MPFR_RNDU);
-    else mpfr_set_si(v.L(), -1, MPFR_RNDD);
+    mul_d(t3_, pi_, j + off);
+    if (less(t3_, Hi, a, Lo) || less(a, Hi, t3_, Lo)) continue;
+    if (std::fmod(std::fabs(j), 2.0) == 0) v.set_end(Hi, 1);
+    else v.set_end(Lo, -1);
   }
 }
 
@@ -151,27 +152,26 @@ void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
   const double lo = a.lo();
   const double hi = a.hi();
   if (!(hi - lo < 6.0) || !(std::fabs(lo) < 1e6) || !(std::fabs(hi) < 1e6)) {
-    mpfi_sin(s, a);
-    mpfi_cos(c, a);
+    apply_fn(Fn::Sin, s, a);
+    apply_fn(Fn::Cos, c, a);
     return;
   }
-  for (int e = 0; e < 2; ++e) {
-    mpfr_srcptr x = e ? a.R() : a.L();
-    int k = mpfr_equal_p(cache.end[0].L(), x) ? 0 : mpfr_equal_p(cache.end[1].L(), x) ? 1 : -1;
+  for (End x : {Lo, Hi}) {
+    int k = same(cache.end[0], Lo, a, x) ? 0 : same(cache.end[1], Lo, a, x) ? 1 : -1;
     if (k < 0) {  // NaN, the initial end, equals nothing
       k = cache.last ^= 1;
-      mpfi_set_fr(cache.end[k], x);
+      point(cache.end[k], a, x);
       Balls& B = *balls_;
       B.compute(
-          x, [&B](slong prec) { arb_sin_cos(B.f, B.g, B.x, prec); }, cache.end_sin[k],
+          a, x, [&B](slong prec) { arb_sin_cos(B.f, B.g, B.x, prec); }, cache.end_sin[k],
           &cache.end_cos[k]);
     }
-    if (e == 0) {
-      mpfi_set(s, cache.end_sin[k]);
-      mpfi_set(c, cache.end_cos[k]);
+    if (x == Lo) {
+      s = cache.end_sin[k];
+      c = cache.end_cos[k];
     } else {
-      mpfi_union(s, s, cache.end_sin[k]);
-      mpfi_union(c, c, cache.end_cos[k]);
+      hull(s, s, cache.end_sin[k]);
+      hull(c, c, cache.end_cos[k]);
     }
   }
   extremum(s, a, 0.5, lo, hi);
@@ -180,11 +180,11 @@ void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
 
 void Evaluator::trig(bool cosine, int child, const Ival& a, Ival& r) {
   TrigCache& c = tc_[tc_of_[child]];
-  if (!mpfr_equal_p(c.arg.L(), a.L()) || !mpfr_equal_p(c.arg.R(), a.R())) {  // NaN: never equal
+  if (!same(c.arg, Lo, a, Lo) || !same(c.arg, Hi, a, Hi)) {  // NaN: never equal
     sincos(c, a, c.sin, c.cos);
-    mpfi_set(c.arg, a);
+    c.arg = a;
   }
-  mpfi_set(r, cosine ? c.cos : c.sin);
+  r = cosine ? c.cos : c.sin;
 }
 
 int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
@@ -192,69 +192,61 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
   int st = 0;
   switch (n.op) {
     case Op::Const:
-      if (mpfi_set_str(r, m_.literals[n.k].c_str(), 10) != 0)
+      if (!set_str(r, m_.literals[n.k]))
         throw ModelError("malformed number '" + m_.literals[n.k] + "'");
       break;
-    case Op::Pi: mpfi_const_pi(r); break;
+    case Op::Pi: const_pi(r); break;
     case Op::Var: break;  // handled by eval()
-    case Op::Add: mpfi_add(r, *a, *b); break;
-    case Op::Sub: mpfi_sub(r, *a, *b); break;
+    case Op::Add: add(r, *a, *b); break;
+    case Op::Sub: sub(r, *a, *b); break;
     case Op::Mul:
-      if (n.a == n.b) mpfi_sqr(r, *a);
-      else mpfi_mul(r, *a, *b);
+      if (n.a == n.b) sqr(r, *a);
+      else mul(r, *a, *b);
       break;
     case Op::Div:  // b ∋ 0: defined nowhere if b = [0, 0], else no information
       if (b->has_zero()) return pole(r, *b);
-      mpfi_div(r, *a, *b);
+      div(r, *a, *b);
       break;
-    case Op::Min:
-      mpfr_min(r.L(), a->L(), b->L(), MPFR_RNDD);
-      mpfr_min(r.R(), a->R(), b->R(), MPFR_RNDU);
-      break;
-    case Op::Max:
-      mpfr_max(r.L(), a->L(), b->L(), MPFR_RNDD);
-      mpfr_max(r.R(), a->R(), b->R(), MPFR_RNDU);
-      break;
-    case Op::Neg: mpfi_neg(r, *a); break;
-    case Op::Sqr: mpfi_sqr(r, *a); break;
+    case Op::Min: min(r, *a, *b); break;
+    case Op::Max: max(r, *a, *b); break;
+    case Op::Neg: neg(r, *a); break;
+    case Op::Sqr: sqr(r, *a); break;
     case Op::Pow:
       if (n.k < 0 && a->has_zero()) return pole(r, *a);
       power(r, *a, n.k);
       break;
     case Op::Sqrt:  // on a ∩ [0, +inf]
-      if (mpfr_sgn(a->R()) < 0) return 2;
-      st = mpfr_sgn(a->L()) < 0;
-      mpfi_set(t1_, *a);
-      if (st) mpfr_set_zero(t1_.L(), 1);
-      mpfi_sqrt(r, t1_);
+      if (a->end_sign(Hi) < 0) return 2;
+      st = a->end_sign(Lo) < 0;
+      t1_ = *a;
+      if (st) t1_.set_end(Lo, 0);
+      sqrt(r, t1_);
       break;
     case Op::Log:
-      if (mpfr_sgn(a->R()) <= 0) return 2;
-      if (mpfr_sgn(a->L()) <= 0) {  // log on a ∩ (0, +inf]
-        mpfr_set_inf(r.L(), -1);
-        mpfr_log(r.R(), a->R(), MPFR_RNDU);
+      if (a->end_sign(Hi) <= 0) return 2;
+      if (a->end_sign(Lo) <= 0) {  // log on a ∩ (0, +inf]
+        log_hi(r, *a);
         st = 1;
       } else {
-        mpfi_log(r, *a);
+        apply_fn(Fn::Log, r, *a);
       }
       break;
     case Op::Asin:
     case Op::Acos:
-      if (mpfr_cmp_si(a->R(), -1) < 0 || mpfr_cmp_si(a->L(), 1) > 0) return 2;
-      mpfi_interv_si(t1_, -1, 1);
-      if (!mpfi_is_inside(*a, t1_)) st = 1;
-      mpfi_intersect(t1_, *a, t1_);
-      if (n.op == Op::Asin) mpfi_asin(r, t1_);
-      else mpfi_acos(r, t1_);
+      if (cmp(*a, Hi, -1) < 0 || cmp(*a, Lo, 1) > 0) return 2;
+      t1_.set(-1, 1);
+      if (!is_inside(*a, t1_)) st = 1;
+      intersect(t1_, *a, t1_);
+      apply_fn(n.op == Op::Asin ? Fn::Asin : Fn::Acos, r, t1_);
       break;
-    case Op::Exp: mpfi_exp(r, *a); break;
+    case Op::Exp: apply_fn(Fn::Exp, r, *a); break;
     case Op::Sin: trig(false, n.a, *a, r); break;
     case Op::Cos: trig(true, n.a, *a, r); break;
-    case Op::Tan: mpfi_tan(r, *a); break;  // a pole inside gives an unbounded result: st 1 below
-    case Op::Abs: mpfi_abs(r, *a); break;
-    case Op::Atan: mpfi_atan(r, *a); break;
+    case Op::Tan: apply_fn(Fn::Tan, r, *a); break;  // a pole inside: unbounded, st 1 below
+    case Op::Abs: abs(r, *a); break;
+    case Op::Atan: apply_fn(Fn::Atan, r, *a); break;
   }
-  if (mpfi_nan_p(r)) r.entire();
+  if (r.nan()) r.entire();
   if (!r.bounded()) return 1;
   return st;
 }
@@ -264,23 +256,47 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
 // mode evaluates every node.
 bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
   charge(prog.size());
+  note_changes(box);
   for (int id : prog) {
     const Node& n = m_.nodes[id];
     Ival& r = val_[id];
     int& st = st_[id];
     if (!n.dep) {
-      mpfi_set(r, cval_[id]);
+      r = cval_[id];
       st = cstat_[id];
-    } else if (n.op == Op::Var) {
-      mpfi_set(r, box[n.k]);
-      st = var_status(r);
-    } else {
-      const Ival* b = n.b >= 0 ? &val_[n.b] : nullptr;
-      st = std::max(st_[n.a], n.b >= 0 ? st_[n.b] : 0);
-      if (st < 2) st = std::max(st, apply(id, r, &val_[n.a], b));
+    } else if (!fresh(id)) {
+      if (n.op == Op::Var) {
+        r = box[n.k];
+        st = var_status(r);
+      } else {
+        const Ival* b = n.b >= 0 ? &val_[n.b] : nullptr;
+        st = std::max(st_[n.a], n.b >= 0 ? st_[n.b] : 0);
+        if (st < 2) st = std::max(st, apply(id, r, &val_[n.a], b));
+      }
+      stamp_[id] = clock_;
     }
     if (mode != Mode::Truth && (st == 2 || (st == 1 && mode == Mode::Proof))) return false;
   }
+  return true;
+}
+
+// A variable whose interval differs from the one the last evaluation saw gets a new time.
+void Evaluator::note_changes(const Ival* box) {
+  for (int v = 0; v < nv(); ++v) {
+    Ival& s = seen_[v];
+    if (same(s, Lo, box[v], Lo) && same(s, Hi, box[v], Hi)) continue;
+    s = box[v];  // NaN ends compare unequal: such a variable is always new
+    changed_at_[v] = ++clock_;
+  }
+}
+
+// A node's value and status are kept when it was computed after the last change of every
+// variable it mentions (its value is a function of theirs) and not narrowed by HC4 since.
+bool Evaluator::fresh(int id) const {
+  const uint64_t t = stamp_[id];
+  if (t == 0) return false;
+  for (uint64_t d = m_.nodes[id].dep; d; d &= d - 1)
+    if (changed_at_[__builtin_ctzll(d)] > t) return false;
   return true;
 }
 
@@ -290,8 +306,8 @@ int Evaluator::truth(int f) const {
   const Formula& F = m_.formulas[f];
   if (F.kind == Formula::Atom) {
     const Ival& g = val_[F.expr];
-    if (st_[F.expr] == 2 || g.empty() || mpfr_sgn(g.R()) < int(F.strict)) return 0;
-    return st_[F.expr] == 0 && mpfr_sgn(g.L()) >= int(F.strict) ? 2 : 1;
+    if (st_[F.expr] == 2 || g.empty() || g.end_sign(Hi) < int(F.strict)) return 0;
+    return st_[F.expr] == 0 && g.end_sign(Lo) >= int(F.strict) ? 2 : 1;
   }
   int t = F.kind == Formula::And ? 2 : 0;
   for (int k : F.kids) t = F.kind == Formula::And ? std::min(t, truth(k)) : std::max(t, truth(k));
@@ -324,7 +340,7 @@ bool Evaluator::derive(int id) {
   const int nv = this->nv();
   Ival* D = &der_[size_t(id) * nv];
   if (n.op == Op::Var) {
-    mpfi_set_si(D[n.k], 1);
+    set_si(D[n.k], 1);
     return true;
   }
   const Ival* A = &der_[size_t(n.a) * nv];
@@ -334,45 +350,45 @@ bool Evaluator::derive(int id) {
   const Ival& r = val_[id];
   const bool unary = n.b < 0;
   switch (n.op) {
-    case Op::Neg: mpfi_set_si(g_, -1); break;
-    case Op::Sqr: mpfi_mul_si(g_, a, 2); break;
+    case Op::Neg: set_si(g_, -1); break;
+    case Op::Sqr: mul_d(g_, a, 2); break;
     case Op::Pow:
       power(g_, a, n.k - 1);
-      mpfi_mul_si(g_, g_, n.k);
+      mul_d(g_, g_, n.k);
       break;
     case Op::Sqrt:  // not differentiable at 0
       if (r.has_zero()) return false;
-      mpfi_mul_si(g_, r, 2);
-      mpfi_inv(g_, g_);
+      mul_d(g_, r, 2);
+      inv(g_, g_);
       break;
-    case Op::Exp: mpfi_set(g_, r); break;
-    case Op::Log: mpfi_inv(g_, a); break;
+    case Op::Exp: g_ = r; break;
+    case Op::Log: inv(g_, a); break;
     case Op::Sin: trig(true, n.a, a, g_); break;
     case Op::Cos:
       trig(false, n.a, a, g_);
-      mpfi_neg(g_, g_);
+      neg(g_, g_);
       break;
     case Op::Tan:
-      mpfi_sqr(g_, r);
-      mpfi_add_si(g_, g_, 1);
+      sqr(g_, r);
+      add_d(g_, g_, 1);
       break;
     case Op::Abs:
       if (!a.sign()) return false;
-      mpfi_set_si(g_, a.sign());
+      set_si(g_, a.sign());
       break;
     case Op::Asin:
     case Op::Acos:
-      mpfi_sqr(g_, a);
-      mpfi_si_sub(g_, 1, g_);
-      if (mpfr_sgn(g_.L()) <= 0) return false;
-      mpfi_sqrt(g_, g_);
-      mpfi_inv(g_, g_);
-      if (n.op == Op::Acos) mpfi_neg(g_, g_);
+      sqr(g_, a);
+      si_sub(g_, 1, g_);
+      if (g_.end_sign(Lo) <= 0) return false;
+      sqrt(g_, g_);
+      inv(g_, g_);
+      if (n.op == Op::Acos) neg(g_, g_);
       break;
     case Op::Atan:
-      mpfi_sqr(g_, a);
-      mpfi_add_si(g_, g_, 1);
-      mpfi_inv(g_, g_);
+      sqr(g_, a);
+      add_d(g_, g_, 1);
+      inv(g_, g_);
       break;
     default: break;  // binary: below; constants and variables: above
   }
@@ -380,24 +396,24 @@ bool Evaluator::derive(int id) {
     if (!(need >> v & 1)) continue;
     Ival& d = D[v];
     if (unary) {
-      mpfi_mul(d, g_, A[v]);
+      mul(d, g_, A[v]);
     } else if (n.op == Op::Add) {
-      mpfi_add(d, A[v], B[v]);
+      add(d, A[v], B[v]);
     } else if (n.op == Op::Sub) {
-      mpfi_sub(d, A[v], B[v]);
+      sub(d, A[v], B[v]);
     } else if (n.op == Op::Mul) {
-      mpfi_mul(t1_, A[v], b);
-      mpfi_mul(t2_, a, B[v]);
-      mpfi_add(d, t1_, t2_);
+      mul(t1_, A[v], b);
+      mul(t2_, a, B[v]);
+      add(d, t1_, t2_);
     } else if (n.op == Op::Div) {  // (a' - r b') / b
-      mpfi_mul(t1_, r, B[v]);
-      mpfi_sub(t1_, A[v], t1_);
-      mpfi_div(d, t1_, b);
+      mul(t1_, r, B[v]);
+      sub(t1_, A[v], t1_);
+      div(d, t1_, b);
     } else {  // min/max: differentiable only where one argument is certainly smaller
-      const bool a_less = mpfr_less_p(a.R(), b.L());
-      const bool b_less = mpfr_less_p(b.R(), a.L());
+      const bool a_less = less(a, Hi, b, Lo);
+      const bool b_less = less(b, Hi, a, Lo);
       if (!a_less && !b_less) return false;
-      mpfi_set(d, (a_less == (n.op == Op::Min)) ? A[v] : B[v]);
+      d = (a_less == (n.op == Op::Min)) ? A[v] : B[v];
     }
     if (!d.bounded()) return false;
   }
@@ -407,7 +423,8 @@ bool Evaluator::derive(int id) {
 bool Evaluator::hc4(int eq, Ival* box) {
   const std::vector<int>& prog = eq_prog[eq];
   if (!eval(prog, box, Mode::Refute)) return false;
-  mpfi_set_si(t1_, 0);
+  for (int id : prog) stamp_[id] = 0;  // the backward pass narrows the values
+  set_si(t1_, 0);
   if (!val_[m_.eqs[eq]].meet(t1_)) return false;
   charge(prog.size());
   for (auto it = prog.rbegin(); it != prog.rend(); ++it)
@@ -416,31 +433,30 @@ bool Evaluator::hc4(int eq, Ival* box) {
 }
 
 // x ∩= t, ignoring a NaN t (no information); false when x becomes empty.
-static bool cut(Ival& x, const Ival& t) { return mpfi_nan_p(t) ? true : x.meet(t); }
+static bool cut(Ival& x, const Ival& t) { return t.nan() ? true : x.meet(t); }
 
 bool Evaluator::hull_both(Ival& a, const Ival& s) {
-  if (mpfi_nan_p(s)) return true;  // no information
-  mpfi_intersect(t2_, a, s);
-  mpfi_neg(t3_, s);
-  mpfi_intersect(t3_, a, t3_);
+  if (s.nan()) return true;  // no information
+  intersect(t2_, a, s);
+  neg(t3_, s);
+  intersect(t3_, a, t3_);
   if (t2_.empty() && t3_.empty()) return false;
-  if (t2_.empty()) mpfi_set(a, t3_);
-  if (t3_.empty()) mpfi_set(a, t2_);
-  if (!t2_.empty() && !t3_.empty()) mpfi_union(a, t2_, t3_);
+  if (t2_.empty()) a = t3_;
+  if (t3_.empty()) a = t2_;
+  if (!t2_.empty() && !t3_.empty()) hull(a, t2_, t3_);
   return true;
 }
 
 // r ∩= [0, +inf]; false when r becomes empty.
 bool Evaluator::meet_nonnegative(Ival& r) {
-  mpfr_set_zero(t1_.L(), 1);
-  mpfr_set_inf(t1_.R(), 1);
+  t1_.set(0, INFINITY);
   return r.meet(t1_);
 }
 
 // r = a²: r ∩= [0, +inf], then a ∩= ±sqrt(r).
 bool Evaluator::project_square(Ival& r, Ival& a) {
   if (!meet_nonnegative(r)) return false;
-  mpfi_sqrt(t1_, r);
+  sqrt(t1_, r);
   return hull_both(a, t1_);
 }
 
@@ -453,87 +469,86 @@ bool Evaluator::backward(int id, Ival* box) {
   switch (n.op) {
     case Op::Var: return box[n.k].meet(r);
     case Op::Add:  // a ∈ r − b, then b ∈ r − a
-      mpfi_sub(t1_, r, *b);
+      sub(t1_, r, *b);
       if (!cut(*a, t1_)) return false;
-      mpfi_sub(t1_, r, *a);
+      sub(t1_, r, *a);
       return cut(*b, t1_);
     case Op::Sub:  // a ∈ r + b, then b ∈ a − r
-      mpfi_add(t1_, r, *b);
+      add(t1_, r, *b);
       if (!cut(*a, t1_)) return false;
-      mpfi_sub(t1_, *a, r);
+      sub(t1_, *a, r);
       return cut(*b, t1_);
     case Op::Neg:
-      mpfi_neg(t1_, r);
+      neg(t1_, r);
       return cut(*a, t1_);
     case Op::Mul:
       if (n.a == n.b) return project_square(r, *a);
       if (!b->has_zero()) {
-        mpfi_div(t1_, r, *b);
+        div(t1_, r, *b);
         if (!cut(*a, t1_)) return false;
       }
       if (!a->has_zero()) {
-        mpfi_div(t1_, r, *a);
+        div(t1_, r, *a);
         if (!cut(*b, t1_)) return false;
       }
       return true;
     case Op::Div:  // a = r·b and b = a/r wherever a/b is defined
       if (r.bounded()) {
-        mpfi_mul(t1_, r, *b);
+        mul(t1_, r, *b);
         if (!cut(*a, t1_)) return false;
       }
       if (!r.has_zero()) {
-        mpfi_div(t1_, *a, r);
+        div(t1_, *a, r);
         if (!cut(*b, t1_)) return false;
       }
       return true;
     case Op::Min:  // min(a, b) >= lo(r) forces a, b >= lo(r); max(a, b) <= hi(r) likewise
-      mpfr_set(t1_.L(), r.L(), MPFR_RNDD);
-      mpfr_set_inf(t1_.R(), 1);
+      t1_ = r;
+      t1_.set_end(Hi, INFINITY);
       return cut(*a, t1_) && cut(*b, t1_);
     case Op::Max:
-      mpfr_set_inf(t1_.L(), -1);
-      mpfr_set(t1_.R(), r.R(), MPFR_RNDU);
+      t1_ = r;
+      t1_.set_end(Lo, -INFINITY);
       return cut(*a, t1_) && cut(*b, t1_);
     case Op::Sqr: return project_square(r, *a);
     case Op::Pow: {
       if (n.k < 0) return true;  // no projection: weak but sound
       bool even = n.k % 2 == 0;
       if (even && !meet_nonnegative(r)) return false;
-      mpfr_rootn_ui(t1_.L(), r.L(), (unsigned long)n.k, MPFR_RNDD);
-      mpfr_rootn_ui(t1_.R(), r.R(), (unsigned long)n.k, MPFR_RNDU);
+      rootn_ui(t1_, r, (unsigned long)n.k);
       return even ? hull_both(*a, t1_) : cut(*a, t1_);
     }
     case Op::Sqrt:  // a ∈ (r ∩ [0, +inf])²
       if (!meet_nonnegative(r)) return false;
-      mpfi_sqr(t1_, r);
+      sqr(t1_, r);
       return cut(*a, t1_);
     case Op::Exp:  // a ∈ log(r ∩ [0, +inf])
       if (!meet_nonnegative(r)) return false;
-      mpfi_log(t1_, r);
+      apply_fn(Fn::Log, t1_, r);
       return cut(*a, t1_);
     case Op::Log:
-      mpfi_exp(t1_, r);
+      apply_fn(Fn::Exp, t1_, r);
       return cut(*a, t1_);
     case Op::Abs: return meet_nonnegative(r) && hull_both(*a, r);
     case Op::Asin:  // a = sin(asin a) ∈ sin(r)
-      mpfi_sin(t1_, r);
+      apply_fn(Fn::Sin, t1_, r);
       return cut(*a, t1_);
     case Op::Acos:
-      mpfi_cos(t1_, r);
+      apply_fn(Fn::Cos, t1_, r);
       return cut(*a, t1_);
     case Op::Atan:  // no information where tan(r) is unbounded
-      mpfi_tan(t1_, r);
+      apply_fn(Fn::Tan, t1_, r);
       return !t1_.bounded() || cut(*a, t1_);
     case Op::Sin:
     case Op::Cos:  // r ∩ [−1, 1], then the preimage of r in a: one branch, or all of them
-      mpfi_interv_si(t1_, -1, 1);
+      t1_.set(-1, 1);
       if (!r.meet(t1_)) return false;
       trig(n.op == Op::Cos, n.a, *a, t4_);
       // Nothing to remove when the image is already inside r; huge arguments are left alone.
-      if (mpfi_is_inside(t4_, r) > 0) return true;
+      if (is_inside(t4_, r)) return true;
       if (!(std::fabs(a->lo()) < 1e6 && std::fabs(a->hi()) < 1e6)) return true;
       if (a->hi() - a->lo() < 3 && monotone_projection(n.op, r, *a, t4_))
-        return mpfr_cmp(a->L(), a->R()) <= 0;
+        return !less(*a, Hi, *a, Lo);
       return project_general(n.op, r, *a);
     case Op::Tan: case Op::Const: case Op::Pi:
       return true;
@@ -542,18 +557,18 @@ bool Evaluator::backward(int id, Ival* box) {
 }
 
 // out := enclosure of s·asin(y) + cπ (sin) or s·acos(y) + cπ (cos), from Arb's ball.
-void Evaluator::branch_inverse(Op op, mpfr_srcptr y, int s, double c, Ival& out) {
+void Evaluator::branch_inverse(Op op, const Ival& r, End e, int s, double c, Ival& out) {
   Balls& B = *balls_;
   B.compute(
-      y,
+      r, e,
       [&B, op](slong prec) {
         if (op == Op::Sin) arb_asin(B.f, B.x, prec);
         else arb_acos(B.f, B.x, prec);
       },
       out, nullptr);
-  if (s < 0) mpfi_neg(out, out);
-  mpfi_mul_d(t3_, pi_, c);
-  mpfi_add(out, out, t3_);
+  if (s < 0) neg(out, out);
+  mul_d(t3_, pi_, c);
+  add(out, out, t3_);
 }
 
 // When a provably lies in one monotone branch [(j+off)π, (j+1+off)π] of sin (off = 1/2)
@@ -565,21 +580,21 @@ bool Evaluator::monotone_projection(Op op, const Ival& r, Ival& a, const Ival& f
   const double PI = 3.141592653589793;
   const double off = op == Op::Sin ? 0.5 : 0.0;
   double j = std::floor(0.5 * (a.lo() + a.hi()) / PI - off);
-  mpfi_mul_d(t3_, pi_, j + off);
-  if (mpfr_cmp(t3_.R(), a.L()) > 0) return false;
-  mpfi_mul_d(t3_, pi_, j + 1 + off);
-  if (mpfr_cmp(t3_.L(), a.R()) < 0) return false;
+  mul_d(t3_, pi_, j + off);
+  if (less(a, Lo, t3_, Hi)) return false;
+  mul_d(t3_, pi_, j + 1 + off);
+  if (less(t3_, Lo, a, Hi)) return false;
   bool dec = std::fmod(std::fabs(j), 2.0) == 0;
   // sin: −asin on decreasing branches; cos: −acos on increasing ones.
   int s = (op == Op::Sin) == dec ? -1 : 1;
   double c = (op == Op::Cos && dec) ? j : j + 1;
-  if (dec ? mpfr_cmp(r.R(), fa.R()) < 0 : mpfr_cmp(r.L(), fa.L()) > 0) {
-    branch_inverse(op, dec ? r.R() : r.L(), s, c, t2_);
-    if (mpfr_cmp(t2_.L(), a.L()) > 0) mpfr_set(a.L(), t2_.L(), MPFR_RNDD);
+  if (dec ? less(r, Hi, fa, Hi) : less(fa, Lo, r, Lo)) {
+    branch_inverse(op, r, dec ? Hi : Lo, s, c, t2_);
+    if (less(a, Lo, t2_, Lo)) copy_end(a, Lo, t2_, Lo);
   }
-  if (dec ? mpfr_cmp(r.L(), fa.L()) > 0 : mpfr_cmp(r.R(), fa.R()) < 0) {
-    branch_inverse(op, dec ? r.L() : r.R(), s, c, t2_);
-    if (mpfr_cmp(t2_.R(), a.R()) < 0) mpfr_set(a.R(), t2_.R(), MPFR_RNDU);
+  if (dec ? less(fa, Lo, r, Lo) : less(r, Hi, fa, Hi)) {
+    branch_inverse(op, r, dec ? Lo : Hi, s, c, t2_);
+    if (less(t2_, Hi, a, Hi)) copy_end(a, Hi, t2_, Hi);
   }
   return true;
 }
@@ -588,8 +603,8 @@ bool Evaluator::monotone_projection(Op op, const Ival& r, Ival& a, const Ival& f
 // ∪k (±s + 2kπ) with s = acos(r) ⊆ [0, π] (cos): every preimage of r. The pieces are MPFI
 // enclosures, and the k range (margin 2) covers every piece that can meet a (|a| < 1e6).
 bool Evaluator::project_general(Op op, const Ival& r, Ival& a) {
-  if (op == Op::Sin) mpfi_asin(t1_, r);
-  else mpfi_acos(t1_, r);
+  if (op == Op::Sin) apply_fn(Fn::Asin, t1_, r);
+  else apply_fn(Fn::Acos, t1_, r);
   const double P = 6.283185307179586;
   const double kmin = std::floor(a.lo() / P) - 2;
   const double kmax = std::floor(a.hi() / P) + 2;
@@ -597,20 +612,20 @@ bool Evaluator::project_general(Op op, const Ival& r, Ival& a) {
   bool any = false;
   for (double k = kmin; k <= kmax; ++k)
     for (int branch = 0; branch < 2; ++branch) {
-      if (branch == 0) mpfi_set(t2_, t1_);
-      else if (op == Op::Sin) mpfi_sub(t2_, pi_, t1_);
-      else mpfi_neg(t2_, t1_);
+      if (branch == 0) t2_ = t1_;
+      else if (op == Op::Sin) sub(t2_, pi_, t1_);
+      else neg(t2_, t1_);
       // A piece that clearly misses a (in double, with a margin) is skipped.
       if (t2_.hi() + k * P < a.lo() - 1e-6 || t2_.lo() + k * P > a.hi() + 1e-6) continue;
-      mpfi_mul_si(t3_, two_pi, long(k));
-      mpfi_add(t2_, t2_, t3_);
-      mpfi_intersect(t2_, t2_, a);
+      mul_d(t3_, two_pi, long(k));
+      add(t2_, t2_, t3_);
+      intersect(t2_, t2_, a);
       if (t2_.empty()) continue;
-      if (any) mpfi_union(g_, g_, t2_);
-      else mpfi_set(g_, t2_);
+      if (any) hull(g_, g_, t2_);
+      else g_ = t2_;
       any = true;
     }
-  if (any) mpfi_set(a, g_);
+  if (any) a = g_;
   return any;
 }
 

@@ -2,7 +2,7 @@
 // enclosures and refutation. Preconditioners are plain doubles: the recorded ones are
 // hints, and the checker's own (for refutation) come from a small Gauss–Jordan inverse of
 // the midpoint matrix; any real matrix is sound because every product that feeds a
-// verdict is an MPFI operation (mpfi_mul_d is exact-input, outward-rounded output).
+// verdict is an outward-rounded interval operation (interval.h) on the exact doubles.
 #include "checker.h"
 
 #include <algorithm>
@@ -48,21 +48,21 @@ static bool invert(std::vector<double> M, int n, std::vector<double>& inv) {
 static void det(const std::vector<Ival>& M, int n, Ival& out) {
   if (n > 6) return out.entire();
   if (n == 1) {
-    mpfi_set(out, M[0]);
+    out = M[0];
     return;
   }
-  mpfi_set_si(out, 0);
+  set_si(out, 0);
   std::vector<Ival> minor(size_t(n - 1) * (n - 1));
-  Ival sub, term;
+  Ival cof, term;
   for (int j = 0; j < n; ++j) {
     int k = 0;
     for (int r = 1; r < n; ++r)
       for (int c = 0; c < n; ++c)
         if (c != j) minor[k++] = M[r * n + c];
-    det(minor, n - 1, sub);
-    mpfi_mul(term, M[j], sub);
-    if (j % 2) mpfi_sub(out, out, term);
-    else mpfi_add(out, out, term);
+    det(minor, n - 1, cof);
+    mul(term, M[j], cof);
+    if (j % 2) sub(out, out, term);
+    else add(out, out, term);
   }
 }
 
@@ -85,10 +85,10 @@ void Prover::load(const double* lohi) {
 
 // out := Σ_k C[k]·x[k] (k < n), each term an exact double times an interval, outward rounded.
 void Prover::dot(Ival& out, const double* C, const Ival* const* x) {
-  mpfi_set_si(out, 0);
+  set_si(out, 0);
   for (int k = 0; k < n_; ++k) {
-    mpfi_mul_d(t1_, *x[k], C[k]);
-    mpfi_add(out, out, t1_);
+    mul_d(t1_, *x[k], C[k]);
+    add(out, out, t1_);
   }
 }
 
@@ -111,14 +111,14 @@ void Prover::rhs(const double* C) {
 // Row i of Gauss–Seidel for C·f = 0 on q ∈ X around the centre c (both indexed by command):
 // t1_ := (b_i + Σ_{j≠i} A_ij·(X_j − c_j)) / A_ii.
 void Prover::gs_row(int i, const std::vector<Ival>& X, const std::vector<Ival>& c) {
-  mpfi_set(t1_, b_[i]);
+  t1_ = b_[i];
   for (int j = 0; j < n_; ++j) {
     if (j == i) continue;
-    mpfi_sub(t2_, X[j], c[j]);
-    mpfi_mul(t2_, t2_, A_[i * n_ + j]);
-    mpfi_add(t1_, t1_, t2_);
+    sub(t2_, X[j], c[j]);
+    mul(t2_, t2_, A_[i * n_ + j]);
+    add(t1_, t1_, t2_);
   }
-  mpfi_div(t1_, t1_, A_[i * n_ + i]);
+  div(t1_, t1_, A_[i * n_ + i]);
 }
 
 // J := the derivatives eval_ad() just computed w.r.t. the variables `cols`.
@@ -154,7 +154,7 @@ const char* Prover::newton(const double* Q, const double* C, bool pose) {
     const Ival& aii = A_[i * n_ + i];
     if (aii.has_zero() || !aii.bounded()) return "a diagonal entry of C*J contains 0";
     gs_row(i, X, c);
-    mpfi_sub(y[i], c[i], t1_);
+    sub(y[i], c[i], t1_);
     if (!y[i].bounded() || y[i].empty()) return "Hansen-Sengupta image is unbounded";
     if (!X[i].meet(y[i])) return "Gauss-Seidel step left Q~";
   }
@@ -174,17 +174,17 @@ bool Prover::jacobians() {
 bool Prover::dominant(const std::vector<Ival>& J, const double* C, const double* D) {
   product(J, C, A_);
   for (int i = 0; i < n_; ++i) {
-    mpfi_set_si(t2_, 0);
+    set_si(t2_, 0);
     for (int j = 0; j < n_; ++j) {
       if (!A_[i * n_ + j].bounded()) return false;
       if (j == i) continue;
-      mpfi_abs(t1_, A_[i * n_ + j]);
-      mpfi_mul_d(t1_, t1_, D[j]);
-      mpfi_add(t2_, t2_, t1_);
+      abs(t1_, A_[i * n_ + j]);
+      mul_d(t1_, t1_, D[j]);
+      add(t2_, t2_, t1_);
     }
-    mpfi_abs(t1_, A_[i * n_ + i]);
-    mpfi_mul_d(t1_, t1_, D[i]);
-    if (!(mpfr_cmp(t1_.L(), t2_.R()) > 0)) return false;
+    abs(t1_, A_[i * n_ + i]);
+    mul_d(t1_, t1_, D[i]);
+    if (!less(t2_, Hi, t1_, Lo)) return false;
   }
   return true;
 }
@@ -200,13 +200,13 @@ const char* Prover::regular(const double* CX, const double* CQ, const double* DX
 bool Prover::factor(const Factor& f, bool jac, Ival& out) {
   if (f.kind == Factor::User) {
     if (!ev_.eval(ev_.factor_prog[f.arg], box.data(), Mode::Proof)) return false;
-    mpfi_set(out, ev_.val(m_.factors[f.arg]));
+    out = ev_.val(m_.factors[f.arg]);
     return true;
   }
   if (!jac && !jacobians()) return false;
   const std::vector<Ival>& J = (f.kind == Factor::DetFx || f.kind == Factor::DiagFx) ? Jx_ : Jq_;
   if (f.kind == Factor::DetFx || f.kind == Factor::DetFq) det(J, n_, out);
-  else mpfi_set(out, J[f.arg * n_ + f.arg]);
+  else out = J[f.arg * n_ + f.arg];
   return out.bounded();
 }
 
@@ -221,10 +221,9 @@ int Prover::hs_contract(std::vector<Ival>& b) {
   product(Jq_, C.data(), A_);
   std::vector<Ival> X(n_), c(n_);
   w_ = b;
-  for (int j = 0; j < n_; ++j) {  // the centre: the MPFR midpoint, a point of b
+  for (int j = 0; j < n_; ++j) {  // the centre: a point of b near its middle
     X[j] = b[m_.command[j]];
-    mpfi_mid(c[j].L(), X[j]);
-    mpfr_set(c[j].R(), c[j].L(), MPFR_RNDN);
+    mid(c[j], X[j]);
     w_[m_.command[j]] = c[j];
   }
   if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return 0;
@@ -232,8 +231,8 @@ int Prover::hs_contract(std::vector<Ival>& b) {
   for (int i = 0; i < n_; ++i) {
     if (A_[i * n_ + i].has_zero()) continue;
     gs_row(i, X, c);
-    mpfi_sub(t2_, c[i], t1_);
-    if (!mpfi_nan_p(t2_) && !X[i].meet(t2_)) return -1;
+    sub(t2_, c[i], t1_);
+    if (!t2_.nan() && !X[i].meet(t2_)) return -1;
   }
   for (int j = 0; j < n_; ++j) b[m_.command[j]] = X[j];
   return 1;
@@ -288,10 +287,10 @@ bool Prover::refute_rec(std::vector<Ival>& b, int depth, int& budget) {
   }
   if (!(best > 0)) return false;
   std::vector<Ival> c = b;
-  Ival mid;
-  mpfi_mid(mid.L(), b[v]);
-  mpfr_set(b[v].R(), mid.L(), MPFR_RNDU);
-  mpfr_set(c[v].L(), mid.L(), MPFR_RNDD);
+  Ival m;
+  mid(m, b[v]);
+  copy_end(b[v], Hi, m, Lo);
+  copy_end(c[v], Lo, m, Lo);
   budget -= 2;
   return refute_rec(b, depth + 1, budget) && refute_rec(c, depth + 1, budget);
 }
