@@ -8,6 +8,7 @@
 // charges it.
 #include <flint/flint.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <memory>
@@ -66,23 +67,26 @@ void ProofBatch::add(long record, uint64_t limit, Proof proof) {
   start();
 }
 
-// Jobs of the running batch by an atomic index, on worker t, until none is left.
+// Jobs of the running batch, a run of consecutive ones at a time (neighbouring records
+// share boxes, which the evaluator's caches keep), on worker t, until none is left.
 void ProofBatch::work_on(int t) {
   Worker& w = *workers_[t];
-  for (size_t i; (i = next_.fetch_add(1)) < running_.size();) {
-    Job& j = running_[i];
-    // Stopped where a sequential check, having done `work` before this batch, would be
-    // stopped at the latest; the judgement charges the jobs before it too.
-    w.ev->work = 0;
-    w.ev->work_limit = j.limit > work ? j.limit - work : 0;
-    try {
-      j.failure = j.proof(*w.pr);
-    } catch (...) {
-      j.error = std::current_exception();
+  const size_t run = 32, N = running_.size();
+  for (size_t i; (i = next_.fetch_add(run)) < N;)
+    for (size_t k = i; k < std::min(N, i + run); ++k) {
+      Job& j = running_[k];
+      // Stopped where a sequential check, having done `work` before this batch, would be
+      // stopped at the latest; the judgement charges the jobs before it too.
+      w.ev->work = 0;
+      w.ev->work_limit = j.limit > work ? j.limit - work : 0;
+      try {
+        j.failure = j.proof(*w.pr);
+      } catch (...) {
+        j.error = std::current_exception();
+      }
+      j.work = w.ev->work;
+      j.proof = nullptr;  // the captured boxes are no longer needed
     }
-    j.work = w.ev->work;
-    j.proof = nullptr;  // the captured boxes are no longer needed
-  }
 }
 
 // The queued jobs become the running batch, on a helper thread per worker but the first
