@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -270,6 +271,11 @@ class Evaluator {
   // usual precisions several times cheaper than MPFR's correctly rounded functions.
   struct Balls;
   std::unique_ptr<Balls> balls_;
+  struct Memo {
+    double t = NAN, s[2], c[2];  // an end, its sine and cosine
+  };
+  std::vector<Memo> memo_ = std::vector<Memo>(1024);  // 2^10: the shift below
+  void ends_sin_cos(const Ival& a, End x, Ival& s, Ival& c);
   void extremum(Ival& v, const Ival& a, double off, double lo, double hi);
   Ival pi_;
   uint64_t dirs_ = 0;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace cc {
 
@@ -41,7 +42,7 @@ struct Evaluator::Balls {
     get_end(m, a, e);
     arf_set_mpfr(end, m);
     arb_set_arf(x, end);
-    for (slong prec = p + 16;; prec *= 2) {
+    for (slong prec = p + 9;; prec *= 2) {
       fn(prec);
       get(f, F);
       if (G) get(g, *G);
@@ -161,10 +162,7 @@ void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
     if (k < 0) {  // NaN, the initial end, equals nothing
       k = cache.last ^= 1;
       point(cache.end[k], a, x);
-      Balls& B = *balls_;
-      B.compute(
-          a, x, [&B](slong prec) { arb_sin_cos(B.f, B.g, B.x, prec); }, cache.end_sin[k],
-          &cache.end_cos[k]);
+      ends_sin_cos(a, x, cache.end_sin[k], cache.end_cos[k]);
     }
     if (x == Lo) {
       s = cache.end_sin[k];
@@ -176,6 +174,23 @@ void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
   }
   extremum(s, a, 0.5, lo, hi);
   extremum(c, a, 0.0, lo, hi);
+}
+
+// s, c := sin and cos of an end of a. On doubles, remembered in a direct-mapped table: a
+// cell's ends are its parent's and its siblings' too.
+void Evaluator::ends_sin_cos(const Ival& a, End x, Ival& s, Ival& c) {
+  const double t = x == Lo ? a.lo() : a.hi();
+  uint64_t key = 0;
+  std::memcpy(&key, &t, sizeof t);
+  Memo* m = Ival::doubles ? &memo_[(key * 0x9E3779B97F4A7C15ull) >> 54] : nullptr;
+  if (m && m->t == t) {  // a NaN end is never found
+    s.set(m->s[0], m->s[1]);
+    c.set(m->c[0], m->c[1]);
+    return;
+  }
+  Balls& B = *balls_;
+  B.compute(a, x, [&B](slong prec) { arb_sin_cos(B.f, B.g, B.x, prec); }, s, &c);
+  if (m) *m = Memo{t, {s.lo(), s.hi()}, {c.lo(), c.hi()}};
 }
 
 void Evaluator::trig(bool cosine, int child, const Ival& a, Ival& r) {
