@@ -1,12 +1,13 @@
 // checker.h — every declaration of check_cert, the independent checker of the certificates
 // of `aspects solve` (FORMAT.md is the specification). It shares no code with core/ or
 // proofs/. The trusted core, which alone decides a verdict: the reader (cert_reader.cpp,
-// compressed_input.cpp), the model parser (model.cpp), the interval type (interval.cpp), the evaluator (eval.cpp), the
-// proofs on one box (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp,
-// sections.cpp) and the graph M with the bound (bound.cpp). The optional speed layer,
-// tested against the core (`--trusted-only` turns it off): proofs on T threads
-// (proof_batch.cpp) and the strip sweep of M with float items on T threads
-// (fast_sweep.cpp). The command line and its output: cli.cpp.
+// compressed_input.cpp), the model parser (model.cpp), MPFI intervals (interval.cpp), the
+// evaluator (eval.cpp), the proofs on one box (proofs.cpp), the record rules (check.h:
+// check.cpp, tree.cpp, sections.cpp) and the graph M with the bound (bound.cpp). The
+// optional speed layer, tested against the core (`--trusted-only` turns it off): proofs on
+// T threads (proof_batch.cpp), the strip sweep of M with float items on T threads
+// (fast_sweep.cpp) and intervals of doubles at 53 bits (interval.cpp). The command line
+// and its output: cli.cpp.
 #pragma once
 
 #include <openssl/evp.h>
@@ -127,7 +128,7 @@ Verdict check_certificate(FILE* f, const CheckOptions& o);
 // than their parents (so increasing id order is a forward evaluation order), the variables
 // in declaration order, the equations (lhs - rhs) and the user factors, and the constraint
 // formulas (paper 5.4). The parser is purely syntactic: literals are kept as decimal strings
-// and turned into enclosing MPFI intervals by the evaluator (mpfi_set_str), never via strtod.
+// and turned into enclosing intervals by the evaluator (MPFI's mpfi_set_str), never via strtod.
 enum class Op : uint8_t {
   Const, Pi, Var, Add, Sub, Mul, Div, Min, Max,
   Neg, Sqr, Sqrt, Sin, Cos, Tan, Exp, Log, Abs, Asin, Acos, Atan, Pow
@@ -181,7 +182,7 @@ std::vector<int> closure(const Model& m, const std::vector<int>& roots);
 // to π passes it at any fixed precision, and leaves a gap at the seam.
 bool exactly_one_period(const Model& m, const Var& v);
 
-// ---- Interval evaluation of the model's DAG in MPFI (eval.cpp): natural forward
+// ---- Interval evaluation of the model's DAG (eval.cpp): natural forward
 // evaluation, the three-valued truth of the constraints (FORMAT.md, "Constraints"),
 // forward-mode interval AD for the Jacobians, and HC4-Revise.
 enum class Mode { Proof, Refute, Truth };
@@ -409,7 +410,7 @@ struct OutBoxes {
   std::vector<std::unique_ptr<double[]>> chunks_;
 };
 
-// t := x + 2πk in MPFI: the bound x of a box shifted by k periods. Its ends rounded outward
+// t := x + 2πk in intervals: the bound x of a box shifted by k periods. Its ends rounded outward
 // (graph M) or inward (links) to doubles give the shifted bound each check needs.
 void shift_by_periods(Ival& t, const Ival& two_pi, int k, double x);
 
@@ -431,7 +432,7 @@ class PairSweep {
 
 // The trusted sweep (bound.cpp): the boxes, and their copies shifted by ±2π if the sweep
 // variable is periodic, sorted by lower end on it; each overlapping pair is tested by the
-// rule itself, every shifted end computed in MPFI. Slower, and simple.
+// rule itself, every shifted end computed in intervals. Slower, and simple.
 class PlainSweep : public PairSweep {
  public:
   PlainSweep(const OutBoxes& R, const std::vector<bool>& periodic, const Ival& two_pi);

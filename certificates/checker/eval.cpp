@@ -1,6 +1,7 @@
-// eval.cpp — MPFI semantics of every node of the model language (statuses and modes in
-// checker.h). Unbounded or NaN results become the entire line with status 1. HC4 backward
-// steps intersect each child with a superset of its values compatible with the parent.
+// eval.cpp — interval semantics (interval.h) of every node of the model language
+// (statuses and modes in checker.h). Unbounded or NaN results become the entire line with
+// status 1. HC4 backward steps intersect each child with a superset of its values
+// compatible with the parent.
 #include "checker.h"
 
 #include <arb.h>
@@ -132,7 +133,7 @@ void Evaluator::power(Ival& r, const Ival& a, int k) {
 
 // Widens v (an enclosure of sin or cos on a) to ±1 where an extremum t = (j + off)π may
 // lie in a (off = 1/2 for sin, 0 for cos; the value there is (−1)^j). Candidates j come
-// from a double computation with a margin of 1; each is confirmed in MPFI, and an unsure
+// from a double computation with a margin of 1; each is confirmed in intervals, and an unsure
 // case counts as inside (a sound overestimate).
 void Evaluator::extremum(Ival& v, const Ival& a, double off, double lo, double hi) {
   const double PI = 3.141592653589793;
@@ -148,7 +149,7 @@ void Evaluator::extremum(Ival& v, const Ival& a, double off, double lo, double h
 }
 
 // sin and cos of an interval: the hull of Arb's enclosures at both ends, widened to ±1
-// where an extremum may lie inside. Wide or huge arguments go to MPFI.
+// where an extremum may lie inside. Wide or huge arguments go to MPFI (apply_fn).
 void Evaluator::sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c) {
   const double lo = a.lo();
   const double hi = a.hi();
@@ -615,7 +616,7 @@ bool Evaluator::monotone_projection(Op op, const Ival& r, Ival& a, const Ival& f
 }
 
 // Otherwise a ∩= ∪k (s + 2kπ) ∪ (π − s + 2kπ) with s = asin(r) ⊆ [−π/2, π/2] (sin), or
-// ∪k (±s + 2kπ) with s = acos(r) ⊆ [0, π] (cos): every preimage of r. The pieces are MPFI
+// ∪k (±s + 2kπ) with s = acos(r) ⊆ [0, π] (cos): every preimage of r. The pieces are interval
 // enclosures, and the k range (margin 2) covers every piece that can meet a (|a| < 1e6).
 bool Evaluator::project_general(Op op, const Ival& r, Ival& a) {
   if (op == Op::Sin) apply_fn(Fn::Asin, t1_, r);

@@ -138,8 +138,6 @@ Ival::~Ival() {
   if (!doubles) mpfi_clear(v);
 }
 
-double Ival::lo() const { return doubles ? l : mpfr_get_d(&v->left, MPFR_RNDD); }
-double Ival::hi() const { return doubles ? h : mpfr_get_d(&v->right, MPFR_RNDU); }
 void Ival::set(double a, double b) {
   if (!doubles) return void(mpfi_interv_d(v, a, b));
   if (b < a) std::swap(a, b);  // as mpfi_interv_d
@@ -151,10 +149,6 @@ void Ival::set_end(End e, double x) {
   else mpfr_set_d(e == Lo ? &v->left : &v->right, x, e == Lo ? MPFR_RNDD : MPFR_RNDU);
 }
 void Ival::entire() { set(-INFINITY, INFINITY); }
-bool Ival::nan() const { return doubles ? std::isnan(l) || std::isnan(h) : mpfi_nan_p(v); }
-bool Ival::empty() const { return doubles ? !(l <= h) : mpfi_nan_p(v) || mpfi_is_empty(v); }
-bool Ival::bounded() const { return doubles ? finite(*this) : !mpfi_nan_p(v) && mpfi_bounded_p(v); }
-bool Ival::has_zero() const { return doubles ? l <= 0 && 0 <= h : mpfi_has_zero(v) > 0; }
 bool Ival::is_zero() const {
   return doubles ? l == 0 && h == 0 : mpfr_zero_p(&v->left) && mpfr_zero_p(&v->right);
 }
@@ -329,7 +323,7 @@ void sqrt(Ival& r, const Ival& a) {
   by_mpfi(r, a, nullptr, [](mpfi_ptr z, mpfi_srcptr x, mpfi_srcptr) { mpfi_sqrt(z, x); });
 }
 
-// Hull and intersection take the other end where one is NaN, as MPFR's min and max do.
+// On doubles a NaN end gives way to the other (fmin, fmax): it carries no information.
 void hull(Ival& r, const Ival& a, const Ival& b) {
   if (!Ival::doubles) return mpfi_union(r.v, a.v, b.v), void();
   r.l = std::fmin(a.l, b.l);
@@ -405,6 +399,7 @@ void apply_fn(Fn f, Ival& r, const Ival& a) {
 }
 
 void pow_ui(Ival& r, const Ival& a, unsigned long k) {
+  if (Ival::doubles && k == 2 && proper(a) && a.l >= 0) return sqr(r, a);  // x^2, as often
   by_mpfi(r, a, nullptr, [k](mpfi_ptr z, mpfi_srcptr x, mpfi_srcptr) {
     mpfr_pow_ui(&z->left, &x->left, k, MPFR_RNDD);
     mpfr_pow_ui(&z->right, &x->right, k, MPFR_RNDU);
@@ -412,6 +407,7 @@ void pow_ui(Ival& r, const Ival& a, unsigned long k) {
 }
 
 void rootn_ui(Ival& r, const Ival& a, unsigned long k) {
+  if (Ival::doubles && k == 2 && proper(a) && a.l >= 0) return sqrt(r, a);
   by_mpfi(r, a, nullptr, [k](mpfi_ptr z, mpfi_srcptr x, mpfi_srcptr) {
     mpfr_rootn_ui(&z->left, &x->left, k, MPFR_RNDD);
     mpfr_rootn_ui(&z->right, &x->right, k, MPFR_RNDU);

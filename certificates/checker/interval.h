@@ -11,6 +11,7 @@
 
 #include <mpfi.h>
 
+#include <cmath>
 #include <string>
 
 namespace cc {
@@ -29,15 +30,17 @@ class Ival {
   ~Ival();
 
   // The ends as doubles rounded outward (lo down, hi up); exact at 53 bits.
-  double lo() const;
-  double hi() const;
+  double lo() const { return doubles ? l : mpfr_get_d(&v->left, MPFR_RNDD); }
+  double hi() const { return doubles ? h : mpfr_get_d(&v->right, MPFR_RNDU); }
   void set(double lo, double hi);  // [lo, hi], exact doubles
   void set_end(End e, double x);   // one end := x
   void entire();
-  bool nan() const;
-  bool empty() const;    // NaN or lo > hi
-  bool bounded() const;  // neither NaN nor infinite
-  bool has_zero() const;
+  bool nan() const { return doubles ? std::isnan(l) || std::isnan(h) : mpfi_nan_p(v); }
+  bool empty() const { return doubles ? !(l <= h) : mpfi_nan_p(v) || mpfi_is_empty(v); }
+  bool bounded() const {  // neither NaN nor infinite
+    return doubles ? std::isfinite(l) && std::isfinite(h) : !mpfi_nan_p(v) && mpfi_bounded_p(v);
+  }
+  bool has_zero() const { return doubles ? l <= 0 && 0 <= h : mpfi_has_zero(v) > 0; }
   bool is_zero() const;  // [0, 0]
   int sign() const;      // +1 when lo > 0, -1 when hi < 0, else 0 (also when empty)
   int end_sign(End e) const;  // the sign of one end (0 when NaN)
