@@ -105,6 +105,17 @@ double resumed_share(const SearchState& st, const SearchStats& stats) {
   return decided;
 }
 
+// Progress only: a part searched elsewhere, counted as if searched here.
+void count_for_progress(const SearchPart& part, const Box& cell, SearchStats& stats) {
+  for (const SearchNode& node : part.tree) {
+    ++stats.processed;
+    stats.solutions += node.fate == LeafFate::Solution && !node.internal();
+    stats.undecided += node.fate == LeafFate::Undecided && !node.internal();
+    stats.discarded += node.fate == LeafFate::Discarded && !node.internal();
+  }
+  if (!stats.domain_width.empty()) stats.add_decided(stats.share(cell));
+}
+
 // The subtrees shared with other processes (config.remote): this process's threads and the
 // remote server take them from one queue. A sink is opened when its subtree is taken (a
 // large job has more subtrees than a process may hold files open).
@@ -122,6 +133,7 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
       config.remote->serve(
           queue, st.deferred, int(factors.size()), [&] { return config.stopped(); },
           [&](int32_t k, SearchPart&& part, std::string&& records) {
+            count_for_progress(part, st.deferred[k].box, stats);
             st.parts[k] = std::move(part);
             if (cert) {
               std::lock_guard<std::mutex> g(cert_lock);
