@@ -3,7 +3,7 @@
 # a single process: boxes.csv, aspects.cert and aspects.idx byte for byte, summary.json
 # equal but for its times and memory; check_cert verifies each certificate; no temporary
 # file is left in the output directories or in the ranks' TMPDIR.
-# Usage: mpi_same_result.sh MPIRUN ASPECTS CHECK_CERT MODEL EPS
+# Usage: mpi_same_result.sh MPIRUN ASPECTS CHECK_CERT MODEL EPS [P...]   (default P: 1 2 3)
 #
 # Seen failing, each once on purpose, then restored:
 #  - rank 0 sending the box of the subtree before the one it hands out (task_message,
@@ -13,8 +13,11 @@
 #    their 4 variables, so the first split of a subtree is the same either way);
 #  - rank 0 keeping the parts in arrival order (parts[arrival] for parts[task],
 #    proofs/pipeline/search_phase.cpp): rank 0 dies (SIGSEGV) at P = 2.
+# The first also fails the P = 40 case (rprpr: the tree cut at depth 9, 2 subtrees a rank).
 set -eu
 mpirun=$1 aspects=$2 check=$3 model=$4 eps=$5
+shift 5
+processes=${*:-1 2 3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "mpi_same_result: $*" >&2; exit 1; }
@@ -23,7 +26,7 @@ mkdir "$work/tmp"
 
 "$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --out "$work/single" ||
   fail "single process exited $?"
-for p in 1 2 3; do
+for p in $processes; do
   out="$work/p$p"
   # --bind-to none: each rank's two threads may use any core.
   TMPDIR="$work/tmp" "$mpirun" --oversubscribe --bind-to none -n $p \
