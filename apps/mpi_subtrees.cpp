@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <map>
 #include <stdexcept>
@@ -86,6 +87,10 @@ int defer_depth_for(int processes) {
 void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
                              int factors, const std::function<bool()>& stopped,
                              const Returned& returned) {
+  if (deferred.size() < size_t(job_.size()))
+    std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "
+              << job_.size() << " processes: some will have nothing to search (fewer "
+              << "processes, or a smaller --eps, keeps them busy)\n";
   // The subtree each (rank, thread) is searching: a part must answer the task it was given.
   std::map<std::pair<int, int>, int32_t> given;
   int done = 0;

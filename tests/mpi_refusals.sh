@@ -1,6 +1,7 @@
 #!/bin/sh
-# What a distributed `aspects solve` refuses, and how it fails: each case checks the exit
-# status, the message, and that no output directory (or no final output) was written.
+# What a distributed `aspects solve` refuses, how it fails, and a job with more processes than
+# work: each case checks the exit status, the message, and that no output directory (or no
+# final output) was written where none should be.
 # Usage: mpi_refusals.sh CASE MPIRUN ASPECTS ROBOTS_DIR
 #   other_model           rank 1 reads another model file (MPMD: A : B): exit 2, before any work
 #   other_binary          rank 1 runs a copy of the executable with one byte more: exit 2
@@ -9,12 +10,15 @@
 #                         the job ends (MPI_Abort) with rank 0's message, exit 1
 #   dead_rank             rank 1 killed (SIGKILL) while it searches: the job fails, mpirun
 #                         names the rank, no output under a final name
+#   more_processes_than_work  3 processes, PRRP at eps 1 (no subtree below depth 8): a note,
+#                         and the run completes (exit 0, outputs written)
 #   launcher_without_mpi  (default build) the environment of `mpirun -n 2`: exit 2, no output
 #
 # Seen failing, each once on purpose, then restored: other_model and other_binary with the
 # model's and the executable's hash left out of the comparison (apps/mpi_identity.cpp: the
 # run went ahead, exit 0); launcher_without_mpi with the launcher check removed from
-# apps/aspects_main.cpp (exit 0, outputs written).
+# apps/aspects_main.cpp (exit 0, outputs written); more_processes_than_work without the note
+# (apps/mpi_subtrees.cpp).
 set -u
 case_=$1 mpirun=$2 aspects=$3 robots=$4
 work=$(mktemp -d)
@@ -83,6 +87,13 @@ case $case_ in
     for f in summary.json boxes.csv aspects.cert aspects.idx; do
       [ ! -e "$out/$f" ] || fail "$f was written"
     done
+    ;;
+  more_processes_than_work)
+    "$mpirun" --oversubscribe -n 3 "$aspects" solve "$robots/prrp.robot" --eps 1 --quiet \
+      --out "$out" > "$work/log" 2>&1
+    status=$?
+    expect 0 "note: the search left 0 subtrees for 3 processes: some will have nothing to search"
+    [ -f "$out/aspects.cert" ] || fail "no certificate"
     ;;
   launcher_without_mpi)
     OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=0 "$aspects" solve "$robots/prrp.robot" \
