@@ -2,17 +2,23 @@
 // 2 usage or input error.
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <iostream>
+#include <memory>
 
 #include "aspects_version.h"
 #include "checkpoint.h"
 #include "model/model.h"
 #include "model/model_info.h"
+#include "mpi_launcher.h"
 #include "path_command.h"
 #include "plot_command.h"
 #include "query_command.h"
 #include "result_index.h"
 #include "solve_command.h"
+#if ASPECTS_MPI
+#include "mpi_solve.h"
+#endif
 
 using namespace aspects;
 
@@ -136,10 +142,10 @@ int run_command(Commands& c) {
   return run_solve(c.solve_options);
 }
 
-// Runs the chosen command; an error is reported on stderr with its exit status.
-int run_reporting_errors(Commands& c) {
+// Runs `body`; an error is reported on stderr with its exit status.
+int run_reporting_errors(const std::function<int()>& body) {
   try {
-    return run_command(c);
+    return body();
   } catch (const IndexError& e) {
     std::cerr << "aspects: " << e.what() << '\n';
     return 2;
@@ -159,6 +165,34 @@ int run_reporting_errors(Commands& c) {
     std::cerr << "aspects: " << e.what() << '\n';
     return 1;
   }
+}
+
+// `aspects solve` started by an MPI launcher: an MPI job in the MPI build; refused before
+// any work otherwise, since each process would solve the whole problem and write the same
+// outputs.
+int run_solve_in_job(Commands& c, const Launch& launch) {
+#if ASPECTS_MPI
+  (void)launch;
+  std::unique_ptr<MpiJob> job;
+  try {
+    job = std::make_unique<MpiJob>();
+  } catch (const std::exception& e) {
+    std::cerr << "aspects: " << e.what() << '\n';
+    return 1;
+  }
+  record_given_options(c);
+  const int status = run_reporting_errors([&] { return run_solve_mpi(c.solve_options, *job); });
+  job->finish(status);
+  return status;
+#else
+  if (launch.processes == 1) return run_reporting_errors([&] { return run_command(c); });
+  if (launch.rank == 0)
+    std::cerr << "aspects: started by an MPI launcher as " << launch.processes
+              << " processes, but this aspects was built without MPI: each process would "
+                 "solve the whole problem and write the same outputs. Run it as one process, "
+                 "or rebuild with -DASPECTS_MPI=ON (README \"Distributed runs (MPI)\")\n";
+  return 2;
+#endif
 }
 
 }  // namespace
@@ -189,5 +223,7 @@ int main(int argc, char** argv) {
     std::cerr << "aspects: " << e.what() << "\n(run 'aspects --help' for usage)\n";
     return 2;
   }
-  return run_reporting_errors(commands);
+  const Launch launch = detect_launch();
+  if (*commands.solve && launch.by_launcher) return run_solve_in_job(commands, launch);
+  return run_reporting_errors([&] { return run_command(commands); });
 }

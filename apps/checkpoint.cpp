@@ -14,6 +14,7 @@
 #include "certificate_writer.h"
 #include "le_reader.h"
 #include "le_writer.h"
+#include "search_part_codec.h"
 
 namespace aspects {
 
@@ -29,10 +30,7 @@ namespace {
 //     u32 D  D × (nv × (f64 lo  f64 hi)  i32 parent_split  i32 node)
 //     D × (u8 done; when 1: part  str records)
 //   32 bytes: SHA-256 of everything before
-// part = u32 T  T × (i32 left  i32 right  i32 split_var  f64 split  i32 leaf  u8 fate
-//                    i32 reason)
-//        u32 B  B × nv × (f64 lo  f64 hi)  B × u8 certified  B × u8 undecided_kind
-//        B × p × i8 sign  (2 × kVerdicts + 3) × i64 diagnostics
+// part: apps/search_part_codec.h
 const char kMagic[] = "aspects-checkpoint 1\n";
 constexpr size_t kDigest = 32;
 
@@ -86,87 +84,6 @@ class In : public LeReader {
   std::string path_;
 };
 
-void write_part(Out& o, const SearchPart& part, uint32_t p) {
-  o.u32(uint32_t(part.tree.size()));
-  // The format's node, whatever SearchNode's packing: left and right child (-1 for a
-  // leaf), split variable, split point, leaf index (-1 for an internal node).
-  for (const SearchNode& s : part.tree) {
-    o.i32(s.internal() ? s.left() : -1);
-    o.i32(s.internal() ? s.right() : -1);
-    o.i32(s.split_var);
-    o.f64(s.split);
-    o.i32(s.leaf());
-    o.u8(uint8_t(s.fate));
-    o.i32(s.reason);
-  }
-  const OutputBoxes& r = part.boxes;
-  const uint32_t boxes = uint32_t(r.size());
-  o.u32(boxes);
-  for (double x : r.ends().coords()) o.f64(x);
-  for (uint32_t b = 0; b < boxes; ++b) o.u8(r.certified(b));
-  for (uint32_t b = 0; b < boxes; ++b) o.u8(uint8_t(r.kind(b)));
-  for (size_t i = 0; i < size_t(boxes) * p; ++i) o.u8(uint8_t(r.sign_column()[i]));
-  const SearchDiagnostics& d = part.diagnostics;
-  for (int k = 0; k < kVerdicts; ++k) o.i64(d.attempts[k]);
-  for (int k = 0; k < kVerdicts; ++k) o.i64(d.undecided[k]);
-  for (long x : {d.refuted_by_equation, d.refuted_by_newton, d.refuted_by_constraint})
-    o.i64(x);
-}
-
-// Reads a part and checks that its indices stay in range (the merge trusts them);
-// `deferred` is the number of subtrees its Deferred leaves may name (the top's).
-void read_part(In& in, SearchPart& part, const CheckpointHeader& h, uint32_t deferred) {
-  const uint32_t nodes = in.count(29);
-  part.tree.resize(nodes);
-  for (SearchNode& s : part.tree) {
-    const int32_t left = in.i32(), right = in.i32(), var = in.i32();
-    s.split = in.f64();
-    const int32_t leaf = in.i32();
-    uint8_t fate = in.u8();
-    if (fate > uint8_t(LeafFate::Unexplored)) in.fail("bad leaf fate");
-    s.fate = LeafFate(fate);
-    const int32_t reason = in.i32();
-    if (reason < -1 || reason > kMaxPruneReason) in.fail("bad prune reason");
-    s.reason = int16_t(reason);
-    if (var >= 0) {
-      // Children adjacent and in range, the variable the model's.
-      if (var >= int32_t(h.nv) || left <= 0 || right != left + 1 || right >= int32_t(nodes))
-        in.fail("bad tree node");
-      s.set_children(var, s.split, left);
-    } else {
-      s.index = leaf;
-    }
-  }
-  const uint32_t boxes = in.count(16 * uint64_t(h.nv) + 2 + h.p);
-  std::vector<double> coords(size_t(boxes) * 2 * h.nv);
-  for (double& x : coords) x = in.f64();
-  std::vector<uint8_t> certified(boxes);
-  for (auto& c : certified) c = in.u8();
-  std::vector<UndecidedKind> kinds(boxes);
-  for (auto& k : kinds) {
-    uint8_t v = in.u8();
-    if (v > uint8_t(UndecidedKind::Unexplored)) in.fail("bad undecided kind");
-    k = UndecidedKind(v);
-  }
-  std::vector<int8_t> signs(size_t(boxes) * h.p);
-  for (auto& s : signs) s = int8_t(in.u8());
-  part.boxes = OutputBoxes::from_columns(int(h.nv), int(h.p), coords, std::move(certified),
-                                         std::move(kinds), std::move(signs));
-  SearchDiagnostics& d = part.diagnostics;
-  for (int k = 0; k < kVerdicts; ++k) d.attempts[k] = long(in.i64());
-  for (int k = 0; k < kVerdicts; ++k) d.undecided[k] = long(in.i64());
-  for (long* x : {&d.refuted_by_equation, &d.refuted_by_newton, &d.refuted_by_constraint})
-    *x = long(in.i64());
-  for (const SearchNode& s : part.tree) {
-    if (s.internal()) continue;
-    if (s.fate == LeafFate::Deferred) {
-      if (s.index < 0 || uint32_t(s.index) >= deferred) in.fail("bad deferred subtree");
-    } else if (s.index >= int32_t(boxes)) {
-      in.fail("bad output box");
-    }
-  }
-}
-
 }  // namespace
 
 std::string sha256_hex(const std::string& data) {
@@ -202,7 +119,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
   o.u32(h.p);
   o.u8(st.top_done);
   if (st.top_done) {
-    write_part(o, st.top, h.p);
+    write_search_part(o, st.top, h.p);
     o.str(cert ? cert->records(-1) : std::string());
     o.u32(uint32_t(st.deferred.size()));
     for (const DeferredSubtree& d : st.deferred) {
@@ -216,7 +133,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
     for (size_t k = 0; k < st.deferred.size(); ++k) {
       o.u8(done[k]);
       if (!done[k]) continue;
-      write_part(o, st.parts[k], h.p);
+      write_search_part(o, st.parts[k], h.p);
       o.str(cert ? cert->records(int32_t(k)) : std::string());
     }
   }
@@ -268,7 +185,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   SearchState& st = c.state;
   st.top_done = in.u8();
   if (st.top_done) {
-    read_part(in, st.top, h, UINT32_MAX);
+    read_search_part(in, st.top, h.nv, h.p, UINT32_MAX);
     c.top_records = in.str();
     const uint32_t D = in.count(16 * uint64_t(h.nv) + 9);
     st.deferred.resize(D);
@@ -288,7 +205,7 @@ Checkpoint read_checkpoint(const std::string& path) {
     for (uint32_t k = 0; k < D; ++k) {
       st.done[k] = in.u8();
       if (!st.done[k]) continue;
-      read_part(in, st.parts[k], h, 0);
+      read_search_part(in, st.parts[k], h.nv, h.p, 0);
       c.records[k] = in.str();
     }
     for (const SearchNode& s : st.top.tree)

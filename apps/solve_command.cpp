@@ -35,7 +35,7 @@ void return_large_blocks_to_system() {
 
 }  // namespace
 
-int run_solve(const SolveOptions& opts) {
+int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   validate_solve_options(opts);
   return_large_blocks_to_system();
   SolveOptions o = opts;
@@ -44,10 +44,14 @@ int run_solve(const SolveOptions& opts) {
   std::unique_ptr<Checkpoint> resumed = open_resumed_run(o);
   complete_options(o);
   set_arithmetic(o);
-  Model model = solve_model(o, resumed.get());
+  Model model = shared ? std::move(*shared->model) : solve_model(o, resumed.get());
   if (!resumed) choose_bisect(o, model);
 
   AspectsConfig cfg = engine_config(o);
+  if (shared) {
+    cfg.remote = shared->remote;
+    cfg.defer_depth = shared->defer_depth;
+  }
   StopCondition stop;
   set_limits(o, stop);
   cfg.stop = &stop;

@@ -45,6 +45,17 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-int run_solve(const SolveOptions& opts);
+class RemoteSubtrees;
+struct Model;
+
+// A search shared with other processes (an MPI job's rank 0: apps/mpi_solve.*): the model
+// they agreed on, who searches the other subtrees, and where the tree is cut into them.
+struct SharedSearch {
+  Model* model;
+  RemoteSubtrees* remote;
+  int defer_depth;
+};
+
+int run_solve(const SolveOptions& opts, SharedSearch* shared = nullptr);
 
 }  // namespace aspects

@@ -62,7 +62,7 @@ class CertificateWriter : public CertificateSink {
   // and a finished part's records put back before a resumed search (instead of searching
   // it: then neither top() nor subtree(task) is called for it).
   std::string records(int32_t task);
-  void restore(int32_t task, const std::string& records);
+  void restore(int32_t task, const std::string& records) override;
 
   // Links, CSNCs and claims; then closes and renames the file into place.
   void finish(const Model& model, const AspectsResult& result);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "numerics/interval.h"
@@ -39,6 +40,9 @@ class CertificateSink {
   // called before the subtrees are searched (possibly in parallel, one sink each).
   virtual TreeSink* top() = 0;
   virtual TreeSink* subtree(int32_t task) = 0;
+  // The records of subtree `task` as another process's TreeSink wrote them (a distributed
+  // search: proofs/pipeline/remote_subtrees.h); then subtree(task) is not called.
+  virtual void restore(int32_t task, const std::string& records) = 0;
 };
 
 }  // namespace aspects

@@ -15,6 +15,7 @@
 namespace aspects {
 
 struct SearchState;
+class RemoteSubtrees;
 
 struct AspectsConfig {
   double eps = 0.1;
@@ -27,6 +28,9 @@ struct AspectsConfig {
   int threads = 1;
   BisectorKind bisector = BisectorKind::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
+  // Other processes that search subtrees too (an MPI job); null: this process alone.
+  // Not with `resume`, `checkpoint` or a box budget (their state is this process's).
+  RemoteSubtrees* remote = nullptr;
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
   // Limits and signals (search/stop_condition.h), asked by every phase. A stopped search
   // keeps the cells not yet searched as unexplored output boxes; a later phase that stops

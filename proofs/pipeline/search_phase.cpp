@@ -1,15 +1,18 @@
 #include "search_phase.h"
 
 #include <chrono>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "checker_gap.h"
 #include "contractor.h"
 #include "model/constraints.h"
 #include "model/model_eval.h"
 #include "part_merger.h"
+#include "remote_subtrees.h"
 #include "search_state.h"
 #include "solution_box.h"
 
@@ -102,7 +105,80 @@ double resumed_share(const SearchState& st, const SearchStats& stats) {
   return decided;
 }
 
+// Progress only: a part searched elsewhere, counted as if searched here.
+void count_for_progress(const SearchPart& part, const Box& cell, SearchStats& stats) {
+  for (const SearchNode& node : part.tree) {
+    ++stats.processed;
+    stats.solutions += node.fate == LeafFate::Solution && !node.internal();
+    stats.undecided += node.fate == LeafFate::Undecided && !node.internal();
+    stats.discarded += node.fate == LeafFate::Discarded && !node.internal();
+  }
+  if (!stats.domain_width.empty()) stats.add_decided(stats.share(cell));
+}
+
+// The subtrees shared with other processes (config.remote): this process's threads and the
+// remote server take them from one queue. A sink is opened when its subtree is taken (a
+// large job has more subtrees than a process may hold files open).
+void search_with_remote(const Model& model, const AspectsConfig& config,
+                        const std::vector<Factor>& factors, SearchState& st, SearchStats& stats,
+                        const std::function<void()>& tick, Parallel& parallel,
+                        Checkpointer& checkpoints) {
+  const long prec = working_precision();
+  SubtreeQueue queue(st.done);
+  CertificateSink* cert = config.certificate;
+  std::mutex cert_lock;  // the writer's list of subtrees grows as they are taken
+  std::exception_ptr remote_error, local_error;
+  std::thread server([&] {
+    try {
+      config.remote->serve(
+          queue, st.deferred, int(factors.size()), [&] { return config.stopped(); },
+          [&](int32_t k, SearchPart&& part, std::string&& records) {
+            count_for_progress(part, st.deferred[k].box, stats);
+            st.parts[k] = std::move(part);
+            if (cert) {
+              std::lock_guard<std::mutex> g(cert_lock);
+              cert->restore(k, records);
+            }
+            checkpoints.mark_done(k);
+          });
+    } catch (...) {
+      remote_error = std::current_exception();
+    }
+  });
+  try {
+    parallel.arena().execute([&] {
+      tbb::parallel_for(0, std::max(1, config.threads), [&](int) {
+        set_working_precision(prec);  // MPFR's default precision is per thread
+        for (int32_t k; (k = queue.claim()) >= 0;) {
+          TreeSink* sink = nullptr;
+          if (cert) {
+            std::lock_guard<std::mutex> g(cert_lock);
+            sink = cert->subtree(k);
+          }
+          if (search_part(model, config, factors, st.deferred[k].box,
+                          st.deferred[k].parent_split, st.parts[k], sink, stats, tick, -1,
+                          nullptr))
+            checkpoints.mark_done(k);
+        }
+      }, tbb::simple_partitioner());
+    });
+  } catch (...) {
+    local_error = std::current_exception();  // the server still ends: the others drain the queue
+  }
+  server.join();
+  if (local_error) std::rethrow_exception(local_error);
+  if (remote_error) std::rethrow_exception(remote_error);
+}
+
 }  // namespace
+
+bool search_subtree(const Model& model, const AspectsConfig& config,
+                    const std::vector<Factor>& factors, const DeferredSubtree& subtree,
+                    SearchPart& part, TreeSink* sink) {
+  SearchStats stats;
+  return search_part(model, config, factors, subtree.box, subtree.parent_split, part, sink,
+                     stats, {}, -1, nullptr);
+}
 
 SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
                            const std::vector<Factor>& factors, Parallel& parallel,
@@ -135,21 +211,26 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
   }
   check_resumed(st, factors.size());
   if (config.resume && st.top_done) stats.resumed_share = resumed_share(st, stats);
-  std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);
-  for (size_t k = 0; k < st.deferred.size(); ++k)
-    if (!st.done[k] && cert) sinks[k] = cert->subtree(int32_t(k));
-
   Checkpointer checkpoints(config, st);
-  parallel.arena().execute([&] {
-    tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
-      if (st.done[k]) return;
-      set_working_precision(prec);  // MPFR's default precision is per thread
-      if (search_part(model, config, factors, st.deferred[k].box, st.deferred[k].parent_split,
-                      st.parts[k], sinks[k], stats, tick, -1, nullptr))
-        checkpoints.mark_done(k);
-      if (config.checkpoint_seconds > 0) checkpoints.write(false);
-    }, tbb::simple_partitioner());
-  });
+  if (config.remote) {
+    if (config.resume || config.checkpoint)
+      throw std::logic_error("a distributed search neither resumes nor checkpoints");
+    search_with_remote(model, config, factors, st, stats, tick, parallel, checkpoints);
+  } else {
+    std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);
+    for (size_t k = 0; k < st.deferred.size(); ++k)
+      if (!st.done[k] && cert) sinks[k] = cert->subtree(int32_t(k));
+    parallel.arena().execute([&] {
+      tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
+        if (st.done[k]) return;
+        set_working_precision(prec);  // MPFR's default precision is per thread
+        if (search_part(model, config, factors, st.deferred[k].box, st.deferred[k].parent_split,
+                        st.parts[k], sinks[k], stats, tick, -1, nullptr))
+          checkpoints.mark_done(k);
+        if (config.checkpoint_seconds > 0) checkpoints.write(false);
+      }, tbb::simple_partitioner());
+    });
+  }
   bool all_done = st.top_done;
   for (uint8_t d : st.done) all_done = all_done && d;
   if (!all_done) checkpoints.write(true);  // stopped: what a resumed run needs

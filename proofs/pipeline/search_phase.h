@@ -16,6 +16,7 @@
 #include "model/model.h"
 #include "parallel.h"
 #include "phase_clock.h"
+#include "search_state.h"
 
 namespace aspects {
 
@@ -24,6 +25,14 @@ struct SearchOutcome {
   std::vector<SearchNode> tree;
   SearchDiagnostics diagnostics;
 };
+
+// One deferred subtree searched to the end from its box alone, its certificate records
+// into `sink` (may be null): another process's share of a distributed search
+// (remote_subtrees.h). Its part is the one search_phase would have made. False when
+// config.stop stopped it (another process gives none: its parts come back whole).
+bool search_subtree(const Model& model, const AspectsConfig& config,
+                    const std::vector<Factor>& factors, const DeferredSubtree& subtree,
+                    SearchPart& part, TreeSink* sink);
 
 // Laps "search" and "merge" on `clock`.
 SearchOutcome search_phase(const Model& model, const AspectsConfig& config,

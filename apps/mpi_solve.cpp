@@ -1,0 +1,116 @@
+#include "mpi_solve.h"
+
+#include <sched.h>
+
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <utility>
+
+#include "checkpoint.h"
+#include "model/model.h"
+#include "mpi_identity.h"
+#include "mpi_subtrees.h"
+#include "solve_config.h"
+
+namespace aspects {
+
+namespace {
+
+// What a distributed search cannot do yet: their state (a checkpoint, a box budget, a
+// clock) is one process's.
+void refuse_unsupported(const SolveOptions& o) {
+  const std::pair<const char*, bool> options[] = {{"--resume", !o.resume_dir.empty()},
+                                                  {"--checkpoint", o.checkpoint != -1},
+                                                  {"--time-limit", o.time_limit != -1},
+                                                  {"--max-boxes", o.max_boxes != -1},
+                                                  {"--memory-limit", o.memory_limit != -1}};
+  for (const auto& [name, given] : options)
+    if (given)
+      throw UsageError(std::string(name) + " is not supported in a distributed run (mpirun "
+                       "with more than one process) yet; run it as one process");
+}
+
+// The cores this rank may run on: mpirun binds each rank to one core by default (then
+// `--threads 0` means one thread, not one per core of the node).
+int cores_of_this_rank() {
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return 0;
+  return CPU_COUNT(&set);
+}
+
+// The exit status run_reporting_errors (apps/aspects_main.cpp) gives an error.
+int exit_status_of(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const ModelError&) {
+    return 2;
+  } catch (const UsageError&) {
+    return 2;
+  } catch (const CheckpointError&) {
+    return 2;
+  } catch (...) {
+    return 1;
+  }
+}
+
+std::string what_of(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const std::exception& x) {
+    return x.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
+}  // namespace
+
+int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
+  SolveOptions o = opts;
+  if (o.threads == 0) o.threads = cores_of_this_rank();  // 0 still: one per core
+  if (job.size() == 1) return run_solve(o);
+  std::optional<Model> model;
+  std::exception_ptr failure;
+  RunIdentity identity;
+  try {
+    validate_solve_options(o);
+    refuse_unsupported(o);
+    complete_options(o);
+    set_arithmetic(o);
+    model = solve_model(o, nullptr);
+    choose_bisect(o, *model);
+    identity = identity_of(o, *model);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  const Agreement agreed =
+      agree_on_run(job, failure ? nullptr : &identity, failure ? exit_status_of(failure) : 0);
+  if (agreed.outcome == RankAgreement::FailedOnRank0) {
+    if (job.rank() == 0) std::rethrow_exception(failure);
+    return agreed.exit_code;
+  }
+  if (failure && job.rank() != 0)
+    std::cerr << "aspects: rank " << job.rank() << ": " << what_of(failure) << '\n';
+  if (agreed.outcome != RankAgreement::Agreed) {
+    if (job.rank() != 0) return agreed.exit_code;
+    if (agreed.exit_code == 2) throw UsageError(refusal_message(agreed));
+    throw std::runtime_error(refusal_message(agreed));
+  }
+
+  job.set_workers(WorkerState::Searching);
+  if (job.rank() == 0) {
+    MpiSubtreeServer server(job, int(model->vars.size()));
+    SharedSearch shared{&*model, &server, defer_depth_for(job.size())};
+    return run_solve(o, &shared);
+  }
+  try {
+    search_subtrees_for_rank0(job, *model, engine_config(o), !o.no_cert);
+  } catch (const std::exception& e) {
+    std::cerr << "aspects: rank " << job.rank() << ": " << e.what() << '\n';
+    job.abort(1);
+  }
+  return job.wait_for_exit_status();
+}
+
+}  // namespace aspects

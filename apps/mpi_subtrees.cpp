@@ -1,0 +1,175 @@
+#include "mpi_subtrees.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <stdexcept>
+
+#include "certificate_writer.h"
+#include "le_reader.h"
+#include "le_writer.h"
+#include "model/determinant_factors.h"
+#include "pipeline/parallel.h"
+#include "pipeline/search_phase.h"
+#include "search_part_codec.h"
+
+namespace aspects {
+
+namespace {
+
+constexpr int kRankDone = 10;
+constexpr int kFromThread = 1000;
+constexpr int kToThread = 3000;
+constexpr int kMaxThreads = 1024;  // --threads' limit
+constexpr uint8_t kReady = 0, kSearched = 1;
+
+class StringWriter : public LeWriter {
+ public:
+  void bytes(const void* p, size_t n) override {
+    s.append(static_cast<const char*>(p), n);
+  }
+  std::string s;
+};
+
+// A message that cannot be read names its sender: a rank of another build, or a bug.
+class MessageReader : public LeReader {
+ public:
+  MessageReader(const std::string& b, int sender) : LeReader(b, b.size()), sender_(sender) {}
+  [[noreturn]] void fail(const std::string& why) const override {
+    throw std::runtime_error("MPI: a malformed message from rank " + std::to_string(sender_) +
+                             " (" + why + " at byte " + std::to_string(pos()) + ")");
+  }
+
+ private:
+  int sender_;
+};
+
+std::string task_message(int32_t task, const std::vector<DeferredSubtree>& deferred) {
+  StringWriter w;
+  w.i32(task);
+  if (task < 0) return w.s;
+  const DeferredSubtree& d = deferred[task];
+  w.i32(d.parent_split);
+  for (const Interval& x : d.box) {
+    w.f64(x.lo_down());
+    w.f64(x.hi_up());
+  }
+  return w.s;
+}
+
+// This rank's file for the records of the subtree a thread searches (local disk).
+std::string records_path(int rank, int thread) {
+  const char* dir = std::getenv("TMPDIR");
+  return std::string(dir && *dir ? dir : "/tmp") + "/aspects-rank" + std::to_string(rank) +
+         "-" + std::to_string(getpid()) + "-thread" + std::to_string(thread) + ".records";
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw std::runtime_error("cannot read " + path);
+  return b;
+}
+
+}  // namespace
+
+int defer_depth_for(int processes) {
+  const int depth = int(std::ceil(std::log2(8.0 * std::max(1, processes))));
+  return std::max(8, depth);
+}
+
+void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
+                             int factors, const std::function<bool()>& stopped,
+                             const Returned& returned) {
+  if (deferred.size() < size_t(job_.size()))
+    std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "
+              << job_.size() << " processes: some will have nothing to search (fewer "
+              << "processes, or a smaller --eps, keeps them busy)\n";
+  // The subtree each (rank, thread) is searching: a part must answer the task it was given.
+  std::map<std::pair<int, int>, int32_t> given;
+  int done = 0;
+  while (done < job_.size() - 1) {
+    int sender = 0, tag = 0;
+    const std::string msg = job_.receive(MpiJob::kAny, MpiJob::kAny, &sender, &tag);
+    if (tag == kRankDone) {
+      ++done;
+      continue;
+    }
+    const int thread = tag - kFromThread;
+    MessageReader in(msg, sender);
+    if (thread < 0 || thread >= kMaxThreads) in.fail("unexpected tag " + std::to_string(tag));
+    const uint8_t kind = in.u8();
+    auto it = given.find({sender, thread});
+    if (kind == kSearched) {
+      const int32_t task = in.i32();
+      if (it == given.end() || it->second != task) in.fail("a subtree it was not given");
+      SearchPart part;
+      read_search_part(in, part, uint32_t(nv_), uint32_t(factors), 0);
+      std::string records = in.bytes(in.u64());
+      if (!in.at_end()) in.fail("trailing bytes");
+      returned(task, std::move(part), std::move(records));
+    } else if (kind != kReady || it != given.end()) {
+      in.fail("unexpected message");
+    }
+    const int32_t next = stopped() ? -1 : queue.claim();
+    given[{sender, thread}] = next;
+    job_.send(sender, kToThread + thread, task_message(next, deferred));
+  }
+  job_.set_workers(WorkerState::Waiting);
+}
+
+void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& config,
+                               bool certificate) {
+  const std::vector<Factor> factors = determinant_factors(model);
+  const int nv = int(model.vars.size()), threads = std::max(1, config.threads);
+  const long prec = working_precision();
+  Parallel parallel(threads);
+  parallel.arena().execute([&] {
+    tbb::parallel_for(0, threads, [&](int thread) {
+      set_working_precision(prec);  // MPFR's default precision is per thread
+      StringWriter reply;
+      reply.u8(kReady);
+      for (;;) {
+        job.send(0, kFromThread + thread, reply.s);
+        const std::string msg = job.receive(0, kToThread + thread);
+        MessageReader in(msg, 0);
+        DeferredSubtree subtree;
+        const int32_t task = in.i32();
+        if (task < 0) break;
+        subtree.parent_split = in.i32();
+        subtree.node = -1;
+        subtree.box.resize(nv);
+        for (Interval& x : subtree.box) {
+          const double lo = in.f64_bits(), hi = in.f64_bits();
+          if (!(lo <= hi)) in.fail("bad box");
+          x.set_hull(lo, hi);
+        }
+        if (!in.at_end()) in.fail("trailing bytes");
+        SearchPart part;
+        std::string records;
+        if (certificate) {
+          TreeRecordFile sink(records_path(job.rank(), thread), int(factors.size()), model.n());
+          search_subtree(model, config, factors, subtree, part, &sink);
+          records = read_file(sink.path());
+        } else {
+          search_subtree(model, config, factors, subtree, part, nullptr);
+        }
+        reply = StringWriter();
+        reply.u8(kSearched);
+        reply.i32(task);
+        write_search_part(reply, part, uint32_t(factors.size()));
+        reply.u64(records.size());
+        reply.bytes(records.data(), records.size());
+      }
+    }, tbb::simple_partitioner());
+  });
+  job.send(0, kRankDone, std::string());
+}
+
+}  // namespace aspects

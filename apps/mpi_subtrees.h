@@ -1,0 +1,50 @@
+// The search of an MPI job spread over its ranks. Rank 0 searches the top of the tree, then
+// hands out its deferred subtrees one at a time to whichever thread asks first, its own
+// (search_phase) or another rank's (MpiSubtreeServer); the other ranks (search_subtrees_for_rank0)
+// search each subtree from its box alone and send back the part and its certificate
+// records. Parts travel in messages, not files: the ranks need no shared filesystem.
+//
+// Messages (little-endian; apps/mpi_job.h sends byte strings of any length):
+//   thread s of a rank -> rank 0, tag kFromThread + s:
+//     u8 0                                       (ready for a first subtree)
+//     u8 1  i32 task  part  u64 R  R bytes       (task searched: part as in
+//                                                 apps/search_part_codec.h, its records)
+//   rank 0 -> thread s, tag kToThread + s:
+//     i32 task  i32 parent_split  nv × (f64 lo  f64 hi)   (search this)
+//     i32 -1                                              (no more: the thread ends)
+//   a rank -> rank 0, tag kRankDone: empty (all its threads have ended)
+#pragma once
+
+#include "model/model.h"
+#include "mpi_job.h"
+#include "pipeline/aspects_config.h"
+#include "pipeline/remote_subtrees.h"
+
+namespace aspects {
+
+// Rank 0's side: serves every other rank until each has said it is done.
+class MpiSubtreeServer : public RemoteSubtrees {
+ public:
+  // `nv`: the model's variables, to read the parts. Once every rank is done, the job's
+  // workers wait for rank 0's exit status.
+  MpiSubtreeServer(MpiJob& job, int nv) : job_(job), nv_(nv) {}
+  void serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred, int factors,
+             const std::function<bool()>& stopped, const Returned& returned) override;
+
+ private:
+  MpiJob& job_;
+  int nv_;
+};
+
+// Another rank's side: `config.threads` threads ask rank 0 for subtrees and search them
+// until it has none left (config.stop is not used: a part comes back whole). With
+// `certificate`, each part's records go back too. Throws on a malformed message.
+void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& config,
+                               bool certificate);
+
+// The depth at which rank 0 cuts the tree into subtrees for P processes: today's 8 (256
+// subtrees at most) up to 32 processes, then deeper, at least 8 per process. The result
+// does not depend on it: a subtree is searched from its box alone.
+int defer_depth_for(int processes);
+
+}  // namespace aspects
