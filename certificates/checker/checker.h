@@ -332,6 +332,9 @@ class Prover {
   int n_, nv_;
   uint64_t cmd_mask_ = 0, pose_mask_ = 0, all_mask_ = 0;
   std::vector<Ival> w_, Jx_, Jq_, A_, b_;
+  // Scratch of one call at a time, kept to spare the allocations of millions of calls.
+  std::vector<Ival> X_, c_, rb_;  // newton() and hs_contract(); refute()
+  std::vector<double> M_, C_, w1_, w2_;  // hs_contract(); contract()
   Ival t1_, t2_;
 };
 

@@ -12,7 +12,7 @@ namespace cc {
 
 // Approximate inverse of the n×n matrix M (row major) by Gauss–Jordan with partial
 // pivoting, in double. Only a heuristic choice: its result is never trusted.
-static bool invert(std::vector<double> M, int n, std::vector<double>& inv) {
+static bool invert(std::vector<double>& M, int n, std::vector<double>& inv) {  // M is spoilt
   inv.assign(size_t(n) * n, 0.0);
   for (int i = 0; i < n; ++i) inv[i * n + i] = 1;
   for (int c = 0; c < n; ++c) {
@@ -74,6 +74,10 @@ Prover::Prover(Evaluator& ev) : ev_(ev), m_(ev.model()), n_(m_.n()), nv_(ev.nv()
   Jq_.resize(size_t(n_) * n_);
   A_.resize(size_t(n_) * n_);
   b_.resize(n_);
+  X_.resize(n_);
+  c_.resize(n_);
+  w1_.resize(nv_);
+  w2_.resize(nv_);
   for (int j : m_.command) cmd_mask_ |= uint64_t(1) << j;
   for (int j : m_.pose) pose_mask_ |= uint64_t(1) << j;
   all_mask_ = nv_ >= 64 ? ~uint64_t(0) : (uint64_t(1) << nv_) - 1;
@@ -129,7 +133,8 @@ void Prover::read_jacobian(const std::vector<int>& cols, std::vector<Ival>& J) {
 
 const char* Prover::newton(const double* Q, const double* C, bool pose) {
   const std::vector<int>& u = pose ? m_.pose : m_.command;  // the unknowns
-  std::vector<Ival> X(n_), c(n_);  // the unknowns' box and centre
+  std::vector<Ival>& X = X_;  // the unknowns' box and centre
+  std::vector<Ival>& c = c_;
   w_ = box;
   for (int j = 0; j < n_; ++j) {
     X[j].set(Q[2 * j], Q[2 * j + 1]);
@@ -215,11 +220,14 @@ bool Prover::factor(const Factor& f, bool jac, Ival& out) {
 int Prover::hs_contract(std::vector<Ival>& b) {
   if (!ev_.eval_ad(ev_.all_eqs, b.data(), cmd_mask_)) return 0;  // f must be C¹ on b
   read_jacobian(m_.command, Jq_);
-  std::vector<double> M(size_t(n_) * n_), C;  // mid(Fq), its approximate inverse
+  std::vector<double>& M = M_;  // mid(Fq), then spoilt by its approximate inverse C
+  std::vector<double>& C = C_;
+  M.resize(size_t(n_) * n_);
   for (size_t k = 0; k < M.size(); ++k) M[k] = 0.5 * (Jq_[k].lo() + Jq_[k].hi());
   if (!invert(M, n_, C)) return 0;
   product(Jq_, C.data(), A_);
-  std::vector<Ival> X(n_), c(n_);
+  std::vector<Ival>& X = X_;
+  std::vector<Ival>& c = c_;
   w_ = b;
   for (int j = 0; j < n_; ++j) {  // the centre: a point of b near its middle
     X[j] = b[m_.command[j]];
@@ -243,7 +251,8 @@ int Prover::hs_contract(std::vector<Ival>& b) {
 // holds no feasible solution. (Hansen–Sengupta first: the solver's contraction records end
 // where its own Hansen–Sengupta step left them, which HC4 alone reaches in many rounds.)
 bool Prover::contract(std::vector<Ival>& b) {
-  std::vector<double> w(nv_), w2(nv_);
+  std::vector<double>& w = w1_;
+  std::vector<double>& w2 = w2_;
   auto widths = [&](std::vector<double>& out) {
     for (int v = 0; v < nv_; ++v) out[v] = b[v].hi() - b[v].lo();
   };
@@ -299,7 +308,8 @@ bool Prover::refute_rec(std::vector<Ival>& b, int depth, int& budget) {
 
 bool Prover::refute() {
   ++refutations;
-  std::vector<Ival> b = box;
+  std::vector<Ival>& b = rb_;
+  b = box;
   int budget = 4096 - 1;
   return refute_rec(b, 0, budget);
 }
