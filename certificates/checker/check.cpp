@@ -212,15 +212,19 @@ void Checker::run(const CheckOptions& o) {
     throw;
   }
   out.cert_sha = rd.file_sha256();
+  // Every rank ran its share of the proofs (ranks.cpp): the statistics are the sums.
+  uint64_t done[2] = {uint64_t(batch ? batch->refutations() : prover->refutations),
+                      uint64_t(batch ? batch->refute_boxes() : prover->refute_boxes)};
+  ranks::sum(done, 2);
   if (o.quiet) return;
   const auto elapsed = std::chrono::steady_clock::now() - t0;
   std::fprintf(stderr,
                "check_cert: %ld refutations (%ld boxes), %llu node evaluations, %zu pairs in M "
-               "(%.2f s), recomputed lower bound %ld, %d thread%s, %.2f s\n",
-               batch ? batch->refutations() : prover->refutations,
-               batch ? batch->refute_boxes() : prover->refute_boxes,
-               (unsigned long long)(batch ? batch->work : ev->work),
+               "(%.2f s), recomputed lower bound %ld, %d thread%s%s, %.2f s\n",
+               long(done[0]), long(done[1]), (unsigned long long)(batch ? batch->work : ev->work),
                pairs_, graph_seconds_, out.recomputed, threads, threads > 1 ? "s" : "",
+               ranks::size() > 1 ? (" x " + std::to_string(ranks::size()) + " ranks").c_str()
+                                 : "",
                std::chrono::duration<double>(elapsed).count());
 }
 
@@ -268,9 +272,12 @@ cc::Verdict cc::check_certificate(FILE* f, const CheckOptions& o) {
     out.record = e.record;
     out.reason = e.what();
   } catch (const std::bad_alloc&) {
+    // On one rank alone, maybe, while the others wait for it: the job ends.
+    if (ranks::size() > 1) ranks::abort_all("out of memory");
     out.outcome = Outcome::Rejected;
     out.reason = "out of memory";
   } catch (const std::exception& e) {
+    if (ranks::size() > 1) ranks::abort_all(std::string("internal error: ") + e.what());
     out.outcome = Outcome::Rejected;
     out.reason = std::string("internal error: ") + e.what();
   }

@@ -364,6 +364,7 @@ class ProofBatch {
   void work_on(int t);
   void start();
   void finish();
+  static void share(std::vector<Job>& jobs);
   const mpfr_prec_t prec_;
   const size_t batch_;  // jobs per batch
   std::vector<std::unique_ptr<Worker>> workers_;
@@ -373,6 +374,21 @@ class ProofBatch {
   bool failed_ = false;  // a proof failed: it is the verdict, nothing after it is judged
   std::vector<std::thread> helpers_;  // running the batch beside this thread
 };
+
+// ---- The processes of `mpirun -n P check_cert` (ranks.cpp, speed layer): one without MPI.
+namespace ranks {
+// MPI_Init in the MPI build; else a reason to refuse a run under an MPI launcher ("" none).
+std::string start(int* argc, char*** argv);
+void stop();
+[[noreturn]] void abort_all(const std::string& why);  // this rank failed alone: end the job
+int rank();
+int size();
+// The first rank whose executable, certificate or `options` differ from rank 0's; -1: none.
+int differing_rank(const std::string& cert, const std::string& options);
+void sum(uint64_t* v, size_t n);     // element-wise over the ranks, the result on every rank
+void lowest(uint64_t* v, size_t n);  // element-wise minimum over the ranks
+void broadcast(std::string& s, int root);
+}  // namespace ranks
 
 // ---- The combinatorial half of the check (bound.cpp; fast_sweep.cpp): a union-find, the
 // neighbourhood graph M of FORMAT.md ("claim lower-bound") by sort-and-sweep over the output

@@ -1,6 +1,7 @@
 // cli.cpp — `check_cert [options] FILE.cert`: the command line (CLI11) and the one line it
-// prints, as text or as JSON (nlohmann-json). Not trusted reasoning: it reports the
-// Verdict that check.cpp returns, whose outcome is the exit status.
+// prints, as text or as JSON (nlohmann-json); under `mpirun -n P`, rank 0 prints it. Not
+// trusted reasoning: it reports the Verdict that check.cpp returns, whose outcome is the
+// exit status.
 #include <CLI/CLI.hpp>
 
 #include <charconv>
@@ -72,9 +73,13 @@ std::string json_line(const Verdict& v) {
   return j.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
 }
 
-}  // namespace
+// A usage error: said on stderr, exit 2.
+int usage(const std::string& why) {
+  std::fprintf(stderr, "check_cert: %s\n", why.c_str());
+  return int(Outcome::Malformed);
+}
 
-int main(int argc, char** argv) {
+int check_main(int argc, char** argv) {
   CLI::App app{"Re-verifies a certificate of `aspects solve` (certificates/FORMAT.md).\n"
                "Exit 0: verified; 1: rejected (or out of memory); 2: malformed or usage error;\n"
                "3: every proof verified, but the claimed lower bound rests on a user-supplied\n"
@@ -116,6 +121,14 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "check_cert: %s\n(run 'check_cert --help' for usage)\n", e.what());
     return int(Outcome::Malformed);
   }
+  if (ranks::size() > 1) {
+    if (o.trusted_only) return usage("--trusted-only checks in one process: run it without mpirun");
+    const std::string shaping = std::string(o.trust_factors ? "t" : "-") + (json ? "j" : "-");
+    if (const int r = ranks::differing_rank(path, shaping); r >= 0)
+      return usage("rank " + std::to_string(r) + " has another executable, certificate or "
+                   "options than rank 0 (every rank reads the whole certificate)");
+    o.quiet = o.quiet || ranks::rank() > 0;
+  }
   Verdict v;
   if (FILE* f = std::fopen(path.c_str(), "rb")) {
     v = check_certificate(f, o);
@@ -123,6 +136,16 @@ int main(int argc, char** argv) {
     v.outcome = Outcome::Malformed;
     v.reason = "cannot open " + path;
   }
-  std::printf("%s\n", json ? json_line(v).c_str() : text_line(v).c_str());
+  if (ranks::rank() == 0) std::printf("%s\n", json ? json_line(v).c_str() : text_line(v).c_str());
   return int(v.outcome);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string refused = ranks::start(&argc, &argv);
+  const int status = refused.empty() ? check_main(argc, argv) : usage(refused);
+  std::fflush(stdout);
+  ranks::stop();
+  return status;
 }
