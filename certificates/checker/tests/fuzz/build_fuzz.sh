@@ -12,5 +12,5 @@ mkdir -p "$work"
 clang++ -std=c++17 $flags "$here/fuzz_cert_reader.cpp" "$src/check.cpp" "$src/tree.cpp" \
   "$src/sections.cpp" "$src/cert_reader.cpp" \
   "$src/model.cpp" "$src/interval.cpp" "$src/eval.cpp" "$src/proofs.cpp" "$src/bound.cpp" \
-  "$src/fast_sweep.cpp" "$src/proof_batch.cpp" "$src/compressed_input.cpp" -pthread \
+  "$src/fast_sweep.cpp" "$src/proof_batch.cpp" "$src/ranks.cpp" "$src/compressed_input.cpp" -pthread \
   -lmpfi -lmpfr -lgmp -lflint-arb -lflint -lcrypto -lzstd -o "$work/fuzz_cert_reader"
