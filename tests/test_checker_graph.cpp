@@ -170,6 +170,36 @@ TEST(CheckerGraph, EndsBeyondTheFloatsRange) {
   EXPECT_GT(got.size(), 600u);
 }
 
+// A third variable g, periodic, whose ends the items hold: boxes on a 10 × 10 grid of the
+// first two variables, each touching one seam of g, [-π, -π + 1] or [π - 1, π] as doubles.
+// A pair across the seam meets only through b_g − 2π, its upper end rounded outward up to
+// exactly a_g's lower end: the prefilter on g must keep such a contact. (Seen failing with
+// the shifts left out of the prefilter, and with a slack of −1e-3 instead of +1e-9.)
+TEST(CheckerGraph, ThirdVariableKeepsContactsAcrossTheSeam) {
+  const cc::Ival two_pi = make_two_pi();
+  const std::vector<bool> periodic = {false, false, true};
+  cc::OutBoxes R;
+  R.nv = 3;
+  for (int i = 0; i < 200; ++i) {
+    const double x = i % 10, y = i / 10 % 10;
+    const double g0 = i % 2 ? M_PI - 1 : -M_PI, g1 = i % 2 ? M_PI : -M_PI + 1;
+    const double box[6] = {x, x + 1, y, y + 1, g0, g1};
+    R.add_box(box);
+    R.pos.push_back(0);
+    R.neg.push_back(0);
+    R.solution.push_back(1);
+  }
+  const cc::NeighbourSweep sweep(R, periodic, two_pi);
+  std::vector<std::pair<int, int>> got;
+  sweep.run([&](int a, int b) { got.emplace_back(a, b); });
+  std::sort(got.begin(), got.end());
+  got.erase(std::unique(got.begin(), got.end()), got.end());
+  const auto want = brute_force(R, periodic, two_pi);
+  EXPECT_EQ(got, want);
+  // Boxes 0 (x, y = 0, 0; g at -π) and 1 (x = 1; g at π) meet across the seam only.
+  EXPECT_TRUE(std::binary_search(want.begin(), want.end(), std::make_pair(0, 1)));
+}
+
 // Bound (11) by the book: per sign class, a union-find over the brute-force pairs.
 long brute_force_bound(const cc::OutBoxes& R, const std::vector<std::pair<int, int>>& M,
                        uint32_t full) {

@@ -485,6 +485,7 @@ class NeighbourSweep : public PairSweep {
   struct Item {
     float lo, hi;    // on d, shifted by 2πk
     float elo, ehi;  // on e (the whole line if there is no e)
+    float glo, ghi;  // on g (likewise)
     int id, k;
   };
   const OutBoxes& R_;
@@ -503,6 +504,8 @@ class NeighbourSweep : public PairSweep {
   // The pairs of strip t, each handed to `put` (returns false to stop: the pair limit).
   bool sweep_strip(int t, const std::function<bool(int, int)>& put) const;
   double e_lo_ = 0, e_width_ = 1;  // strips of the second sweep variable e: [lo + t·w, ...)
+  int g_ = -1;                     // a third variable, tested in the items; maybe periodic
+  bool g_apart(const Item& p, const Item& q) const;
   int strips_ = 1;
   std::vector<size_t> strip_start_;  // items_ of strip t: [strip_start_[t], strip_start_[t+1])
   std::vector<Item> items_;          // by strip, then by lo
