@@ -1,5 +1,6 @@
 #include "subtree_stats.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -83,6 +84,13 @@ void SubtreeStats::top_searched(const SearchState& st, const PartWork& work) {
     auto [node, path] = std::move(stack.back());
     stack.pop_back();
     const SearchNode& n = st.top.tree[size_t(node)];
+    if (n.fate != LeafFate::Deferred || n.internal()) {
+      if (levels_.size() <= path.size()) levels_.resize(path.size() + 1);
+      Row& level = levels_[path.size()];
+      level.depth = int(path.size());
+      level.nodes = std::max(0L, level.nodes) + 1;
+      level.output_boxes += n.leaf() >= 0;
+    }
     if (n.internal()) {
       stack.push_back({n.right(), path + "1"});
       stack.push_back({n.left(), path + "0"});
@@ -115,7 +123,13 @@ void SubtreeStats::write() const {
   std::ostringstream out;
   out << "part,task,depth,path,nodes,output_boxes,cpu_seconds,wall_seconds,part_bytes,"
          "decode_seconds,message_bytes,searched_by\n";
+  // A level's boxes were searched with the top: it has no clock, bytes or searcher.
   auto row = [&](const char* part, long task, const Row& r) {
+    if (part == std::string("level")) {
+      out << part << ",-1," << r.depth << ",," << r.nodes << ',' << r.output_boxes
+          << ",,,,,,\n";
+      return;
+    }
     out << part << ',' << task << ',' << r.depth << ',' << r.path << ',';
     if (r.nodes >= 0) out << r.nodes;
     out << ',' << r.output_boxes << ',' << seconds_text(r.cpu_seconds) << ','
@@ -125,6 +139,7 @@ void SubtreeStats::write() const {
     out << ',' << (r.nodes < 0 ? "" : r.message_bytes >= 0 ? "remote" : "here") << '\n';
   };
   row("top", -1, top_);
+  for (const Row& level : levels_) row("level", -1, level);
   for (size_t k = 0; k < subtrees_.size(); ++k) row("subtree", long(k), subtrees_[k]);
   write_file_atomically(path_, out.str());
 }

@@ -3,13 +3,16 @@
 // the scheduler on these rows). Observes only: the result is the same with or without it.
 //
 // FILE's columns:
-//   part            top (one row: the top of the tree, searched before the subtrees) or
-//                   subtree (one row per deferred subtree, in task order = depth-first)
-//   task            the subtree's index (-1 for the top)
+//   part            top (one row: the top of the tree, searched before the subtrees),
+//                   level (one row per depth above the cut: the top's boxes at that depth,
+//                   so a replay can cut the same tree higher up) or subtree (one row per
+//                   deferred subtree, in task order = depth first)
+//   task            the subtree's index (-1 for the top and its levels)
 //   depth, path     the subtree's depth and its path from the root, one digit per
 //                   bisection: 0 the lower half, 1 the upper (empty for the top)
 //   nodes           the boxes the part processed (its tree's nodes; a deferred leaf of the
-//                   top is its subtree's root, counted there): summary.json's `processed`
+//                   top is its subtree's root, counted there): those of the top and the
+//                   subtrees sum to summary.json's `processed`; a level's, to the top's
 //   output_boxes    the part's boxes in R = S ∪ U (with the top's, summary.json's total)
 //   cpu_seconds     the searching thread's CPU seconds; wall_seconds its wall seconds
 //                   (empty for a part another process searched)
@@ -56,6 +59,7 @@ class SubtreeStats {
   std::string path_;
   std::mutex lock_;  // the subtrees' rows are filled from several threads
   Row top_;
+  std::vector<Row> levels_;  // the top's nodes and output boxes at each depth
   std::vector<Row> subtrees_;
 };
 
