@@ -31,15 +31,17 @@ seconds over the mean (1 is perfect). The whole run cannot scale beyond
 (search + later phases) / later phases (Amdahl): the table says so.
 
 --grow-from CSV: a coarser run of the same model at the same cut (say eps 0.6 beside 0.3):
-each subtree's work is extrapolated to a finer eps by the growth it showed between the two,
-w * (w / w_coarse) ** (log(eps / eps_target) / log(eps_coarse / eps)), then all rescaled so
-that their sum is --target-cpu seconds when given (a measured total). An extrapolation, not
-a measurement.
+each subtree of the last --stats is extrapolated to a finer eps by the growth of its boxes
+between the two, g = (n / n_coarse) ** (log(eps / eps_target) / log(eps_coarse / eps)),
+its seconds, boxes and bytes multiplied by g; then all rescaled so that the boxes sum to
+--target-nodes when given (a measured total), at the cost per box measured at eps. An
+extrapolation, not a measurement.
 
 Usage: scaling_replay.py --stats CSV --summary JSON [--label TEXT] [--threads T]
   [--ranks 1,2,4,...] [--plot PNG] [--latency S] [--bandwidth B] [--disk B]
-  [--records-per-node B] [--deeper K] [--no-cert] [--grow-from CSV --eps E --eps-coarse E
-  --eps-target E [--target-cpu S] [--phases-json JSON]]
+  [--records-per-node B] [--deeper K] [--no-cert] [--free-ingest] [--grow-from CSV --eps E
+  --eps-coarse E --eps-target E [--target-nodes N] [--later-seconds S]
+  [--extra-records-per-node B]]
 """
 import argparse
 import csv
@@ -182,34 +184,32 @@ def table(label, work, later, a, out):
 
 
 def extrapolated(work, a):
-    """Each subtree's work grown from eps to eps_target as it grew from eps_coarse to eps."""
+    """Each subtree grown from eps to eps_target as its boxes grew from eps_coarse to eps."""
     _, _, csub = read_rows(a.grow_from)
-    coarse = {r["path"]: float(r["cpu_seconds"]) for r in csub}
+    coarse = {r["path"]: int(r["nodes"]) for r in csub}
     power = math.log(a.eps / a.eps_target) / math.log(a.eps_coarse / a.eps)
-    grown = []
-    for p, w in zip(work.paths, work.cpu):
-        c = coarse.get(p, 0.0)
-        # A subtree that was (nearly) empty at the coarser eps: no growth known, kept as is.
-        grown.append(w * (w / c) ** power if c > 1e-4 and w > c else w)
-    if a.target_cpu:
-        scale = a.target_cpu / (sum(grown) + work.top_cpu)
-        grown = [g * scale for g in grown]
-    total = sum(grown)
+    growth = []
+    for p, n in zip(work.paths, work.nodes):
+        c = coarse.get(p, 0)
+        # A subtree the coarser run did not defer or that did not grow: kept as it is.
+        growth.append((n / c) ** power if c > 0 and n > c else 1.0)
+    if a.target_nodes:  # the shape extrapolated, the size measured
+        scale = a.target_nodes / sum(n * g for n, g in zip(work.nodes, growth))
+        growth = [g * scale for g in growth]
     w = Work.__new__(Work)
     w.__dict__.update(work.__dict__)
-    w.cpu = grown
-    factor = total / sum(work.cpu)
-    w.nodes = [int(n * g / c) if c > 0 else n for n, g, c in zip(work.nodes, grown, work.cpu)]
-    w.part_bytes = [int(b * g / c) if c > 0 else b for b, g, c in zip(work.part_bytes, grown, work.cpu)]
-    w.decode = [d * g / c if c > 0 else d for d, g, c in zip(work.decode, grown, work.cpu)]
-    w.processed = int(work.processed * factor)
+    w.cpu = [x * g for x, g in zip(work.cpu, growth)]
+    w.nodes = [int(x * g) for x, g in zip(work.nodes, growth)]
+    w.part_bytes = [int(x * g) for x, g in zip(work.part_bytes, growth)]
+    w.decode = [x * g for x, g in zip(work.decode, growth)]
+    w.processed = sum(w.nodes) + sum(work.levels)
     return w
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--stats", required=True, action="append", help="CSV (or .csv.gz)")
-    ap.add_argument("--summary", required=True, action="append", help="the run's summary.json")
+    ap.add_argument("--stats", action="append", help="CSV (or .csv.gz)")
+    ap.add_argument("--summary", action="append", help="the run's summary.json")
     ap.add_argument("--label", action="append")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--ranks", default="1,2,4,8,16,32,64,128,256,512,1024")
@@ -222,18 +222,31 @@ def main():
     ap.add_argument("--free-ingest", action="store_true",
                     help="rank 0 takes parts in at no cost, no latency: the scheduler alone")
     ap.add_argument("--deeper", type=int, default=0, help="cut this many levels deeper")
+    ap.add_argument("--scenario", default="", help="appended to every label")
+    ap.add_argument("--points-out", help="write the curves as JSON (for --plot-points)")
+    ap.add_argument("--plot-points", nargs="+", help="plot these --points-out files only")
     ap.add_argument("--plot")
     ap.add_argument("--grow-from", help="a coarser run's CSV: extrapolate the last --stats")
     ap.add_argument("--eps", type=float)
     ap.add_argument("--eps-coarse", type=float)
     ap.add_argument("--eps-target", type=float)
-    ap.add_argument("--target-cpu", type=float, help="the extrapolated search's CPU seconds")
-    ap.add_argument("--phases-json", help="later phases' seconds of the extrapolated run")
+    ap.add_argument("--target-nodes", type=float, help="the boxes the extrapolated search "
+                    "processes (measured): all subtrees scaled to it")
+    ap.add_argument("--later-seconds", type=float, default=0,
+                    help="the later phases' seconds of the extrapolated run (measured)")
+    ap.add_argument("--extra-records-per-node", type=float,
+                    help="--records-per-node of the extrapolated run")
     a = ap.parse_args()
     a.ranks = [int(x) for x in a.ranks.split(",")]
-    if len(a.stats) != len(a.summary):
-        sys.exit("one --summary per --stats")
-    labels = a.label or [s for s in a.stats]
+    if a.plot_points:
+        curves = []
+        for f in a.plot_points:
+            curves += [(c["label"], c["points"]) for c in json.load(open(f))]
+        plot(curves, a)
+        return
+    if not a.stats or len(a.stats) != len(a.summary or []):
+        sys.exit("--stats and --summary, one of each per run")
+    labels = [x + a.scenario for x in (a.label or a.stats)]
     out, curves = [], []
     for path, summ, label in zip(a.stats, a.summary, labels):
         work = Work(*read_rows(path))
@@ -241,10 +254,14 @@ def main():
         curves.append((label, table(label, work, later, a, out)))
     if a.grow_from:
         work = extrapolated(Work(*read_rows(a.stats[-1])), a)
-        later = json.load(open(a.phases_json))["later_phase_seconds"] if a.phases_json else 0
-        label = f"{labels[-1]} extrapolated to eps {a.eps_target}"
-        curves.append((label, table(label, work, later, a, out)))
+        if a.extra_records_per_node is not None:
+            a.records_per_node = a.extra_records_per_node
+        label = f"{(a.label or a.stats)[-1]} extrapolated to eps {a.eps_target}{a.scenario}"
+        curves.append((label, table(label, work, a.later_seconds, a, out)))
     print("\n".join(out))
+    if a.points_out:
+        with open(a.points_out, "w") as f:
+            json.dump([{"label": l, "points": p} for l, p in curves], f)
     if a.plot:
         plot(curves, a)
 
@@ -253,17 +270,17 @@ def plot(curves, a):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 7))
     ranks = a.ranks
-    ax1.plot(ranks, ranks, "k:", label="ideal")
-    for (label, pts), colour in zip(curves, ["C0", "C1", "C2", "C3", "C4"]):
+    ax1.plot(ranks, ranks, "k:", label="ideal (solid: search, dashed: whole run)")
+    for k, (label, pts) in enumerate(curves):
+        colour = f"C{k % 10}"
         p = [x[0] for x in pts]
         ax1.plot(p, [x[1] for x in pts], "-o", color=colour, ms=3, label=f"{label}: search")
-        ax1.plot(p, [x[2] for x in pts], "--s", color=colour, ms=3, label=f"{label}: whole run")
+        ax1.plot(p, [x[2] for x in pts], "--s", color=colour, ms=3)
         ax2.plot(p, [100 * x[1] / x[0] for x in pts], "-o", color=colour, ms=3,
                  label=f"{label}: search")
-        ax2.plot(p, [100 * x[2] / x[0] for x in pts], "--s", color=colour, ms=3,
-                 label=f"{label}: whole run")
+        ax2.plot(p, [100 * x[2] / x[0] for x in pts], "--s", color=colour, ms=3)
     ax2.axhline(80, color="grey", lw=0.8)
     for ax in (ax1, ax2):
         ax.set_xscale("log", base=2)
@@ -273,11 +290,11 @@ def plot(curves, a):
     ax1.set_ylabel("predicted speed-up over one rank")
     ax2.set_ylabel("predicted efficiency (%)")
     ax2.set_ylim(0, 105)
-    ax1.legend(fontsize=7)
-    ax2.legend(fontsize=7)
+    handles, labels = ax1.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=8)
     fig.suptitle("aspects solve under MPI: the scheduler replayed on measured subtree costs "
                  "(issue 30)", fontsize=10)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.04 + 0.022 * ((len(curves) + 2) // 2), 1, 1))
     fig.savefig(a.plot, dpi=110)
 
 
