@@ -24,8 +24,8 @@ uniform="--grow-from bench/scaling/3rpr_eps0.3_cut14.csv.gz $e01"
 records="--records-per-node 191"  # measured on 3-RPR eps 0.3 (the records' files)
 
 echo "## As built: cut at 8 subtrees a rank, certificate records through rank 0"
-rpr $records $grow --points-out "$work/rpr_asbuilt.json"
-rrr $records --points-out "$work/rrr_asbuilt.json"
+rpr $records $grow --scenario " (as built)" --points-out "$work/rpr_asbuilt.json"
+rrr $records --scenario " (as built)" --points-out "$work/rrr_asbuilt.json"
 echo "## eps 0.1 grown uniformly, as built"
 rpr $records $uniform --scenario " (uniform)" | sed -n '/extrapolated/,$p'
 echo "## The scheduler alone (--free-ingest)"
