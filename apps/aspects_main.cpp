@@ -85,6 +85,12 @@ void add_solve(CLI::App& app, Commands& c) {
   solve->add_option("--resume", so.resume_dir,
                     "continue the stopped run of DIR from its checkpoint (same outputs as an "
                     "uninterrupted run)");
+  solve->add_option("--subtree-stats", so.subtree_stats,
+                    "write each part of the search's cost to FILE (CSV: boxes, CPU and wall "
+                    "seconds, message bytes), for the scaling study; the result is unchanged");
+  solve->add_option("--cut-depth", so.cut_depth,
+                    "cut the search tree into subtrees at this depth (1-16; default 8, deeper "
+                    "in an MPI job of more than 32 processes); the result is unchanged");
 }
 
 void add_query(CLI::App& app, Commands& c) {

@@ -17,6 +17,7 @@
 #include "solve_progress.h"
 #include "solve_report.h"
 #include "solve_resume.h"
+#include "subtree_stats.h"
 
 namespace aspects {
 
@@ -52,6 +53,12 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
     cfg.remote = shared->remote;
     cfg.defer_depth = shared->defer_depth;
   }
+  if (o.cut_depth != -1) cfg.defer_depth = o.cut_depth;
+  std::unique_ptr<SubtreeStats> subtree_stats;
+  if (!o.subtree_stats.empty()) {
+    subtree_stats = std::make_unique<SubtreeStats>(o.subtree_stats);
+    subtree_stats->attach(cfg);
+  }
   StopCondition stop;
   set_limits(o, stop);
   cfg.stop = &stop;
@@ -66,6 +73,7 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   checkpoints.attach(o, model, cfg, cert.get());
 
   AspectsResult r = compute_aspects(model, cfg);
+  if (subtree_stats) subtree_stats->write();
   if (show_progress) progress.done(model, r, resident_mib());
   if (!o.out_dir.empty()) write_solve_outputs(o, model, cert.get(), r);
   if (!o.quiet) print_solve_report(o, model, r);

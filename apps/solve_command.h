@@ -31,6 +31,11 @@ struct SolveOptions {
   // directory of a stopped run to continue (its options come from its checkpoint).
   double checkpoint = -1;
   std::string resume_dir;
+  // The scaling study (apps/subtree_stats.h): where to write each part's cost (empty:
+  // nowhere), and the depth where the tree is cut into subtrees (-1: the default, 8, or an
+  // MPI job's). Neither changes the result.
+  std::string subtree_stats;
+  int cut_depth = -1;
   std::vector<std::string> given;  // the options given on the command line ("--eps", "MODEL")
   bool was_given(const char* name) const {
     return std::find(given.begin(), given.end(), name) != given.end();

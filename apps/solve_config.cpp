@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -9,6 +10,8 @@
 #include "solve_resume.h"
 
 namespace aspects {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -20,6 +23,33 @@ constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 // costs weigh more (bench/RESULTS.md). tests/long_runs.py, case memory_limit, checks that a
 // run stopped by the limit stays below it.
 constexpr double kReservePerBox = 320;
+// 2^16 subtrees: finer than any job needs (an MPI job of 1,024 processes cuts at 13).
+constexpr int kMaxCutDepth = 16;
+
+}  // namespace
+
+namespace {
+
+// --cut-depth and --subtree-stats. A resumed run keeps the cut of its checkpoint and
+// searches only part of the tree, so neither applies to it. The directory of the CSV is
+// checked now: it is written when the run ends, perhaps hours later.
+void validate_scaling_options(const SolveOptions& o) {
+  if (o.cut_depth != -1 && !(o.cut_depth >= 1 && o.cut_depth <= kMaxCutDepth))
+    throw UsageError("--cut-depth must be between 1 and " + std::to_string(kMaxCutDepth) +
+                     " (got " + std::to_string(o.cut_depth) + ")");
+  if (!o.resume_dir.empty() && (o.cut_depth != -1 || !o.subtree_stats.empty()))
+    throw UsageError(std::string(o.cut_depth != -1 ? "--cut-depth" : "--subtree-stats") +
+                     " is not for a resumed run (it keeps its checkpoint's cut and searches "
+                     "only part of the tree)");
+  if (!o.subtree_stats.empty()) {
+    const fs::path dir = fs::path(o.subtree_stats).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir.empty() ? fs::path(".") : dir, ec) ||
+        fs::is_directory(o.subtree_stats, ec))
+      throw UsageError("--subtree-stats needs a file in an existing directory (got '" +
+                       o.subtree_stats + "')");
+  }
+}
 
 }  // namespace
 
@@ -41,6 +71,7 @@ void validate_solve_options(const SolveOptions& o) {
   if (o.memory_limit != -1 && !(o.memory_limit > 0 && o.memory_limit < 1e6))
     throw UsageError("--memory-limit must be a positive number of GiB (got " +
                      std::to_string(o.memory_limit) + ")");
+  validate_scaling_options(o);
 }
 
 void complete_options(SolveOptions& o) {

@@ -11,6 +11,7 @@
 #include "search/bisector.h"
 #include "search/branch_and_prune.h"
 #include "search/stop_condition.h"
+#include "subtree_work.h"
 
 namespace aspects {
 
@@ -45,6 +46,8 @@ struct AspectsConfig {
   std::function<void(const SearchState&, const std::vector<uint8_t>& done)> checkpoint;
   double checkpoint_seconds = 0;
   std::function<void(const SearchStats&)> progress;
+  // Told what each part of the search cost (--subtree-stats); never changes the result.
+  SubtreeObserver subtree_observer;
   // Told of each phase as it ends (its name as in summary.json's `phases`, its seconds),
   // on the calling thread.
   std::function<void(const std::string& phase, double seconds)> phase_done;

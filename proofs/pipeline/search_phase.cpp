@@ -15,6 +15,7 @@
 #include "remote_subtrees.h"
 #include "search_state.h"
 #include "solution_box.h"
+#include "subtree_work.h"
 
 namespace aspects {
 
@@ -134,6 +135,8 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
           queue, st.deferred, int(factors.size()), [&] { return config.stopped(); },
           [&](int32_t k, SearchPart&& part, std::string&& records) {
             count_for_progress(part, st.deferred[k].box, stats);
+            if (config.subtree_observer.returned)
+              config.subtree_observer.returned(k, part, records.size());
             st.parts[k] = std::move(part);
             if (cert) {
               std::lock_guard<std::mutex> g(cert_lock);
@@ -155,10 +158,13 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
             std::lock_guard<std::mutex> g(cert_lock);
             sink = cert->subtree(k);
           }
+          PartClock clock;
           if (search_part(model, config, factors, st.deferred[k].box,
                           st.deferred[k].parent_split, st.parts[k], sink, stats, tick, -1,
                           nullptr))
             checkpoints.mark_done(k);
+          if (config.subtree_observer.searched_here)
+            config.subtree_observer.searched_here(k, st.parts[k], clock.work());
         }
       }, tbb::simple_partitioner());
     });
@@ -203,11 +209,14 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
   SearchState& st = config.resume ? *config.resume : fresh;
   if (!st.top_done) {
     st = SearchState();
+    PartClock top_clock;
     st.top_done = search_part(model, config, factors, root, -1, st.top,
                               cert ? cert->top() : nullptr, stats, tick, config.defer_depth,
                               &st.deferred);
     st.parts.resize(st.deferred.size());
     st.done.assign(st.deferred.size(), 0);
+    if (config.subtree_observer.top_searched)
+      config.subtree_observer.top_searched(st, top_clock.work());
   }
   check_resumed(st, factors.size());
   if (config.resume && st.top_done) stats.resumed_share = resumed_share(st, stats);
@@ -224,9 +233,12 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
       tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
         if (st.done[k]) return;
         set_working_precision(prec);  // MPFR's default precision is per thread
+        PartClock clock;
         if (search_part(model, config, factors, st.deferred[k].box, st.deferred[k].parent_split,
                         st.parts[k], sinks[k], stats, tick, -1, nullptr))
           checkpoints.mark_done(k);
+        if (config.subtree_observer.searched_here)
+          config.subtree_observer.searched_here(int32_t(k), st.parts[k], clock.work());
         if (config.checkpoint_seconds > 0) checkpoints.write(false);
       }, tbb::simple_partitioner());
     });

@@ -1,0 +1,43 @@
+#!/bin/sh
+# Issue 30's scaling study from the recorded rows in bench/scaling/ (see bench/RESULTS.md,
+# "Issue 30, scaling study", for the runs that made them): the tables on stdout, the plot
+# in bench/scaling_mpi.png. One rank per core (--threads 1); the later phases are the runs'
+# own, measured with 2 threads.
+# Usage: sh bench/scaling_study.sh [OUT_PNG]
+set -eu
+cd "$(dirname "$0")/.."
+png=${1:-bench/scaling_mpi.png}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+replay() { /usr/bin/python3 bench/scaling_replay.py --threads 1 "$@"; }
+rpr() { replay --stats bench/scaling/3rpr_eps0.3_cut14.csv.gz \
+  --summary bench/scaling/3rpr_eps0.3_summary.json --label "3-RPR eps 0.3" "$@"; }
+rrr() { replay --stats bench/scaling/3rrr_eps1_cut14.csv.gz \
+  --summary bench/scaling/3rrr_eps1_summary.json --label "3-RRR eps 1" "$@"; }
+# eps 0.1: each subtree grown as its boxes grew from eps 0.6 to 0.3, scaled to the boxes
+# measured at eps 0.1 (232,025,457 processed), with the later phases measured there
+# (1,049.8 s: solver 3,315.6 s - search 2,711.8 s + outputs 446.0 s) and 207 record bytes
+# per box (48 GB of records); "uniform": every subtree grown alike (the shape of eps 0.3).
+e01="--eps 0.3 --eps-coarse 0.6 --eps-target 0.1 --target-nodes 232025457 --later-seconds 1049.8 --extra-records-per-node 207"
+grow="--grow-from bench/scaling/3rpr_eps0.6_cut14.csv.gz $e01"
+uniform="--grow-from bench/scaling/3rpr_eps0.3_cut14.csv.gz $e01"
+records="--records-per-node 191"  # measured on 3-RPR eps 0.3 (the records' files)
+
+echo "## As built: cut at 8 subtrees a rank, certificate records through rank 0"
+rpr $records $grow --scenario " (as built)" --points-out "$work/rpr_asbuilt.json"
+rrr $records --scenario " (as built)" --points-out "$work/rrr_asbuilt.json"
+echo "## eps 0.1 grown uniformly, as built"
+rpr $records $uniform --scenario " (uniform)" | sed -n '/extrapolated/,$p'
+echo "## The scheduler alone (--free-ingest)"
+rpr --free-ingest $grow --scenario ", scheduler alone" --points-out "$work/rpr_free.json"
+rrr --free-ingest --scenario ", scheduler alone" --points-out "$work/rrr_free.json"
+echo "## The scheduler alone, cut 3 levels deeper (64 subtrees a rank)"
+rpr --free-ingest --deeper 3 $grow --scenario ", scheduler alone, cut +3" --points-out "$work/rpr_deeper.json"
+rrr --free-ingest --deeper 3 --scenario ", scheduler alone, cut +3" --points-out "$work/rrr_deeper.json"
+echo "## eps 0.1 grown uniformly, the scheduler alone, cut +3"
+rpr --free-ingest --deeper 3 $uniform --scenario " (uniform), scheduler alone, cut +3" | sed -n '/extrapolated/,$p'
+echo "## No certificate (--no-cert: only the parts reach rank 0), cut +3"
+rpr --no-cert --deeper 3 $grow --scenario ", no cert, cut +3"
+replay --plot-points "$work"/rpr_asbuilt.json "$work"/rpr_free.json "$work"/rpr_deeper.json \
+  "$work"/rrr_asbuilt.json "$work"/rrr_deeper.json --plot "$png"
+echo "plot: $png"
