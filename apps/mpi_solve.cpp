@@ -10,25 +10,23 @@
 #include "checkpoint.h"
 #include "model/model.h"
 #include "mpi_identity.h"
+#include "mpi_resume.h"
 #include "mpi_subtrees.h"
 #include "solve_config.h"
+#include "solve_resume.h"
 
 namespace aspects {
 
 namespace {
 
-// What a distributed search cannot do yet: their state (a checkpoint, a box budget, a
-// clock) is one process's.
+// What a distributed search cannot do: a box budget counts the boxes one process searched
+// (exactly, before each box), and the other ranks' boxes are known only when their
+// subtrees come back.
 void refuse_unsupported(const SolveOptions& o) {
-  const std::pair<const char*, bool> options[] = {{"--resume", !o.resume_dir.empty()},
-                                                  {"--checkpoint", o.checkpoint != -1},
-                                                  {"--time-limit", o.time_limit != -1},
-                                                  {"--max-boxes", o.max_boxes != -1},
-                                                  {"--memory-limit", o.memory_limit != -1}};
-  for (const auto& [name, given] : options)
-    if (given)
-      throw UsageError(std::string(name) + " is not supported in a distributed run (mpirun "
-                       "with more than one process) yet; run it as one process");
+  if (o.max_boxes != -1)
+    throw UsageError("--max-boxes is not supported in a distributed run (mpirun with more "
+                     "than one process): the budget counts one process's boxes; use "
+                     "--time-limit, or run it as one process");
 }
 
 // The cores this rank may run on: mpirun binds each rank to one core by default (then
@@ -71,16 +69,42 @@ int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
   if (o.threads == 0) o.threads = cores_of_this_rank();  // 0 still: one per core
   if (job.size() == 1) return run_solve(o);
   std::optional<Model> model;
+  std::unique_ptr<Checkpoint> resumed;  // rank 0's
   std::exception_ptr failure;
   RunIdentity identity;
   try {
     validate_solve_options(o);
     refuse_unsupported(o);
-    complete_options(o);
-    set_arithmetic(o);
-    model = solve_model(o, nullptr);
-    choose_bisect(o, *model);
-    identity = identity_of(o, *model);
+    if (job.rank() == 0) resumed = open_resumed_run(o);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  // A resumed run: the other ranks take the checkpoint's options and model from rank 0.
+  std::optional<ResumedModel> shared_model;
+  const bool resuming = rank0_resumes(job, o);
+  if (resuming) {
+    std::optional<ResumedModel> mine;
+    if (resumed)
+      mine = ResumedModel{resumed->header.model_text, resumed->header.model_file.empty()
+                                                          ? "(embedded RRRRR)"
+                                                          : resumed->header.model_file};
+    try {
+      shared_model = share_resumed_run(job, o, mine ? &*mine : nullptr);
+      if (job.rank() != 0 && !shared_model)
+        throw std::runtime_error("rank 0 could not resume the run");  // rank 0 says why
+    } catch (...) {
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  try {
+    if (!failure) {
+      complete_options(o);
+      set_arithmetic(o);
+      model = shared_model ? parse_model(shared_model->text, shared_model->name)
+                           : solve_model(o, resumed.get());
+      if (!resuming) choose_bisect(o, *model);  // a resumed run has its checkpoint's
+      identity = identity_of(o, *model);
+    }
   } catch (...) {
     failure = std::current_exception();
   }
@@ -101,7 +125,7 @@ int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
   job.set_workers(WorkerState::Searching);
   if (job.rank() == 0) {
     MpiSubtreeServer server(job, int(model->vars.size()));
-    SharedSearch shared{&*model, &server, defer_depth_for(job.size())};
+    SharedSearch shared{&*model, &server, defer_depth_for(job.size()), std::move(resumed)};
     return run_solve(o, &shared);
   }
   try {

@@ -92,6 +92,9 @@ void resume_search(Checkpoint& resumed, CertificateWriter* cert, AspectsConfig& 
       if (st.done[k]) cert->restore(int32_t(k), resumed.records[k]);
   }
   cfg.resume = &st;
+  // Its subtrees were cut at the checkpoint's depth (a distributed run's depends on P):
+  // the checkpoints this run writes say so.
+  if (st.top_done) cfg.defer_depth = resumed.header.defer_depth;
 }
 
 Model resumed_model(const SolveOptions& o, const CheckpointHeader& h) {
