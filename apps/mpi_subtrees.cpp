@@ -69,7 +69,7 @@ int defer_depth_for(int processes) {
 void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
                              int factors, const std::function<bool()>& stopped,
                              const Returned& returned) {
-  if (deferred.size() < size_t(job_.size()))
+  if (deferred.size() < size_t(job_.size()) && !stopped())  // a stopped top left the rest
     std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "
               << job_.size() << " processes: some will have nothing to search (fewer "
               << "processes, or a smaller --eps, keeps them busy)\n";
