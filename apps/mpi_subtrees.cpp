@@ -88,8 +88,8 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
   int done = 0;
   auto pause = std::chrono::microseconds(20);
   while (done < job_.size() - 1) {
+    if (!told && stopped()) tell_stop();
     if (!job_.probe(MpiJob::kAny, MpiJob::kAny)) {
-      if (!told && stopped()) tell_stop();
       std::this_thread::sleep_for(pause);
       pause = std::min(pause * 2, std::chrono::microseconds(1000));
       continue;

@@ -6,6 +6,7 @@
 # Usage: mpi_resume.sh CASE MPIRUN ASPECTS CHECK_CERT MODEL EPS
 #   signal     P = 3, SIGTERM to rank 0 once a checkpoint is written: exit 3, a partial
 #              result check_cert verifies; resumed with P = 2, and as one process
+#   signal_rank1  the same with SIGTERM to rank 1: the whole job stops; resumed with P = 2
 #   limits     one process stopped by --max-boxes, resumed with P = 3; P = 2 stopped by
 #              --time-limit, resumed with P = 3 (the checkpoint written when it stops)
 #   dead_rank  P = 3, rank 1 killed (SIGKILL) once a checkpoint is written: the job fails,
@@ -46,8 +47,15 @@ wait_for() {
 }
 # rank0_pid DIR: rank 0 writes DIR/aspects.cert under a temporary name holding its pid.
 rank0_pid() { ls -a "$1" | sed -n 's/^aspects\.cert\.tmp\.\([0-9]*\).*/\1/p' | head -1; }
-# worker_pid RANK: its records file in TMPDIR names its process.
-worker_pid() { ls "$TMPDIR" | sed -n "s/^aspects-rank$1-\([0-9]*\)-thread.*/\1/p" | head -1; }
+# worker_pid RANK: its records file in TMPDIR names its process (a file that exists while
+# the rank searches a subtree: looked for during 10 s at most).
+worker_pid() {
+  for _ in $(seq 1000); do
+    found=$(ls "$TMPDIR" | sed -n "s/^aspects-rank$1-\([0-9]*\)-thread.*/\1/p" | head -1)
+    [ -n "$found" ] && { echo "$found"; return; }
+    sleep 0.01
+  done
+}
 stopped_by() {
   /usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["stopped_by"])' \
     "$1/summary.json"
@@ -97,14 +105,14 @@ expect_stopped() {
   [ "$(stopped_by "$2")" = "$3" ] || fail "$4: stopped by $(stopped_by "$2"), expected $3"
   [ -f "$2/checkpoint" ] || fail "$4: no checkpoint"
 }
-# signal_rank0 P DIR: starts P processes with checkpoints, SIGTERM to rank 0 once one is
+# signal_rank RANK P DIR: starts P processes with checkpoints, SIGTERM to RANK once one is
 # written; leaves the job's status in $status.
-signal_rank0() {
-  mpi "$1" "$model" --eps "$eps" --checkpoint 0.1 --out "$2" > "$work/log" 2>&1 &
+signal_rank() {
+  mpi "$2" "$model" --eps "$eps" --checkpoint 0.1 --out "$3" > "$work/log" 2>&1 &
   job=$!
-  wait_for "$2/checkpoint" || { kill "$job"; fail "P = $1: no checkpoint written"; }
-  pid=$(rank0_pid "$2")
-  [ -n "$pid" ] || { kill "$job"; fail "P = $1: rank 0's certificate not found"; }
+  wait_for "$3/checkpoint" || { kill "$job"; fail "P = $2: no checkpoint written"; }
+  if [ "$1" = 0 ]; then pid=$(rank0_pid "$3"); else pid=$(worker_pid "$1"); fi
+  [ -n "$pid" ] || { kill "$job"; fail "P = $2: rank $1's process not found"; }
   kill -TERM "$pid"
   wait "$job"
   status=$?
@@ -115,13 +123,18 @@ signal_rank0() {
 
 case $case_ in
   signal)
-    signal_rank0 3 "$work/p3"
+    signal_rank 0 3 "$work/p3"
     expect_stopped "$status" "$work/p3" signal "P = 3, SIGTERM to rank 0"
     "$check" "$work/p3/aspects.cert" | grep -q "^check_cert: VERIFIED .* complete=no" ||
       fail "check_cert did not verify the partial result of P = 3"
     cp -r "$work/p3" "$work/p3-again"
     resume_mpi 2 "$work/p3" "stopped with P = 3, resumed with P = 2"
     resume_one "$work/p3-again" "stopped with P = 3, resumed as one process"
+    ;;
+  signal_rank1)
+    signal_rank 1 3 "$work/p3"
+    expect_stopped "$status" "$work/p3" signal "P = 3, SIGTERM to rank 1"
+    resume_mpi 2 "$work/p3" "stopped by a signal to rank 1 of P = 3, resumed with P = 2"
     ;;
   limits)
     "$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --max-boxes 3000 \
@@ -151,7 +164,7 @@ case $case_ in
     resume_mpi 2 "$work/p3" "rank 1 of P = 3 killed, resumed with P = 2"
     ;;
   cut_depth)
-    signal_rank0 40 "$work/p40"
+    signal_rank 0 40 "$work/p40"
     expect_stopped "$status" "$work/p40" signal "P = 40, SIGTERM to rank 0"
     [ "$(depth "$work/p40")" = 9 ] || fail "P = 40: the checkpoint says depth $(depth "$work/p40")"
     "$aspects" solve --resume "$work/p40" --threads 2 --quiet --max-boxes 1 > "$work/log" 2>&1
