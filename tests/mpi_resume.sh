@@ -2,7 +2,7 @@
 # A distributed run stopped (a signal, a limit, a killed rank) and resumed from its
 # checkpoint with another number of processes ends with the outputs of one uninterrupted
 # single process: boxes.csv, aspects.cert and aspects.idx byte for byte; the checkpoint
-# is removed and no temporary file is left in the output directory.
+# is removed and no temporary file is left in the output directory or in the ranks' TMPDIR.
 # Usage: mpi_resume.sh CASE MPIRUN ASPECTS CHECK_CERT MODEL EPS
 #   signal     P = 3, SIGTERM to rank 0 once a checkpoint is written: exit 3, a partial
 #              result check_cert verifies; resumed with P = 2, and as one process
@@ -83,6 +83,7 @@ same_as_reference() {
     cmp "$work/ref/$f" "$1/$f" || fail "$2: $f differs from the uninterrupted run's"
   done
   [ ! -e "$1/checkpoint" ] || fail "$2: the checkpoint was left"
+  [ -z "$(ls -A "$TMPDIR")" ] || fail "$2: the ranks left $(ls "$TMPDIR") in TMPDIR"
   ls -a "$1" | grep -q tmp && fail "$2: temporary file left: $(ls -a "$1")"
   echo "$2: the uninterrupted run's outputs"
 }
@@ -161,6 +162,7 @@ case $case_ in
     for f in summary.json boxes.csv aspects.cert aspects.idx; do
       [ ! -e "$work/p3/$f" ] || fail "$f was written"
     done
+    rm -f "$TMPDIR"/*  # the killed rank's records: nobody is left to remove them
     resume_mpi 2 "$work/p3" "rank 1 of P = 3 killed, resumed with P = 2"
     ;;
   cut_depth)
