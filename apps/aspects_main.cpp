@@ -77,9 +77,11 @@ void add_solve(CLI::App& app, Commands& c) {
   solve->add_option("--time-limit", so.time_limit,
                     "stop the search after SECONDS and write a partial result (exit 3)");
   solve->add_option("--max-boxes", so.max_boxes,
-                    "stop the search after N processed boxes and write a partial result (exit 3)");
+                    "stop the search after N processed boxes and write a partial result (exit 3; "
+                    "not with mpirun -n P, P > 1)");
   solve->add_option("--memory-limit", so.memory_limit,
-                    "stop the search before the process needs more than GiB of memory (exit 3)");
+                    "stop the search before the process (under mpirun: rank 0) needs more than "
+                    "GiB of memory (exit 3)");
   solve->add_option("--checkpoint", so.checkpoint,
                     "every SECONDS and when stopped, save a resumable state in the --out directory");
   solve->add_option("--resume", so.resume_dir,

@@ -179,6 +179,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   h.p = in.u32();
   if (h.nv == 0 || h.nv > 16 || h.p > 20) in.fail("bad sizes");
   if (h.precision < 24 || h.precision > 4096) in.fail("bad precision");
+  if (h.defer_depth < -1 || h.defer_depth > 64) in.fail("bad cut depth");
   // The boxes below are intervals of the run's precision, as in the run that wrote them.
   set_working_precision(long(h.precision));
   if (sha256_hex(h.model_text) != h.model_sha256) in.fail("model text and hash differ");

@@ -112,6 +112,16 @@ std::string MpiJob::receive(int from, int tag, int* sender, int* found_tag) {
   return bytes;
 }
 
+bool MpiJob::probe(int from, int tag) {
+  std::lock_guard<std::mutex> g(lock_);
+  int flag = 0;
+  MPI_Status status;
+  check(MPI_Iprobe(from == kAny ? MPI_ANY_SOURCE : from, tag == kAny ? MPI_ANY_TAG : tag,
+                   MPI_COMM_WORLD, &flag, &status),
+        "MPI_Iprobe");
+  return flag != 0;
+}
+
 std::vector<std::string> MpiJob::gather(const std::string& mine) {
   std::vector<char> all(rank_ == 0 ? mine.size() * size_ : 0);
   std::lock_guard<std::mutex> g(lock_);
@@ -141,7 +151,8 @@ void MpiJob::finish(int exit_code) {
 }
 
 int MpiJob::wait_for_exit_status() {
-  const std::string status = receive(0, kExitStatusTag);
+  std::string status;
+  for (int tag = -1; tag != kExitStatusTag;) status = receive(0, kAny, nullptr, &tag);
   int code = 1;
   if (status.size() == sizeof code) std::memcpy(&code, status.data(), sizeof code);
   return code;

@@ -36,6 +36,8 @@ class MpiJob {
   void send(int to, int tag, const std::string& bytes);
   // The next message from `from` with `tag` (kAny: any); its sender and tag when asked.
   std::string receive(int from, int tag, int* sender = nullptr, int* found_tag = nullptr);
+  // Whether a message from `from` with `tag` (kAny: any) waits to be received; does not wait.
+  bool probe(int from, int tag);
 
   // Every rank's `mine` (all of one size) on rank 0, in rank order; empty elsewhere.
   std::vector<std::string> gather(const std::string& mine);
@@ -47,7 +49,8 @@ class MpiJob {
   // work, and they would wait for ever.
   void finish(int exit_code);
   void set_workers(WorkerState s) { workers_ = s; }
-  // Other ranks: rank 0's exit status, once its run has ended.
+  // Other ranks: rank 0's exit status, once its run has ended. Other messages rank 0 sent
+  // before it knew this rank was done (a stop: apps/mpi_subtrees.h) are dropped.
   int wait_for_exit_status();
 
   [[noreturn]] void abort(int exit_code);

@@ -4,31 +4,30 @@
 
 #include <exception>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <utility>
 
 #include "checkpoint.h"
 #include "model/model.h"
 #include "mpi_identity.h"
+#include "mpi_resume.h"
 #include "mpi_subtrees.h"
 #include "solve_config.h"
+#include "solve_resume.h"
 
 namespace aspects {
 
 namespace {
 
-// What a distributed search cannot do yet: their state (a checkpoint, a box budget, a
-// clock) is one process's.
+// What a distributed search cannot do: a box budget counts the boxes one process searched
+// (exactly, before each box), and the other ranks' boxes are known only when their
+// subtrees come back.
 void refuse_unsupported(const SolveOptions& o) {
-  const std::pair<const char*, bool> options[] = {{"--resume", !o.resume_dir.empty()},
-                                                  {"--checkpoint", o.checkpoint != -1},
-                                                  {"--time-limit", o.time_limit != -1},
-                                                  {"--max-boxes", o.max_boxes != -1},
-                                                  {"--memory-limit", o.memory_limit != -1}};
-  for (const auto& [name, given] : options)
-    if (given)
-      throw UsageError(std::string(name) + " is not supported in a distributed run (mpirun "
-                       "with more than one process) yet; run it as one process");
+  if (o.max_boxes != -1)
+    throw UsageError("--max-boxes is not supported in a distributed run (mpirun with more "
+                     "than one process): the budget counts one process's boxes; use "
+                     "--time-limit, or run it as one process");
 }
 
 // The cores this rank may run on: mpirun binds each rank to one core by default (then
@@ -64,28 +63,65 @@ std::string what_of(const std::exception_ptr& e) {
   }
 }
 
+// What one rank made of the command line before the ranks compare: the run's model and
+// identity, or the error that stopped it (reported through agree_on_run).
+struct PreparedRun {
+  std::optional<Model> model;
+  std::unique_ptr<Checkpoint> resumed;  // rank 0's, when it resumes
+  RunIdentity identity;
+  std::exception_ptr failure;
+};
+
+// Collective (a resumed run's options and model go from rank 0 to the others).
+PreparedRun prepare_run(SolveOptions& o, MpiJob& job) {
+  PreparedRun run;
+  try {
+    validate_solve_options(o);
+    refuse_unsupported(o);
+    if (job.rank() == 0) run.resumed = open_resumed_run(o);
+  } catch (...) {
+    run.failure = std::current_exception();
+  }
+  std::optional<ResumedModel> shared_model;
+  const bool resuming = rank0_resumes(job, o);
+  if (resuming) {
+    std::optional<ResumedModel> mine;
+    if (run.resumed) {
+      const CheckpointHeader& h = run.resumed->header;
+      mine = ResumedModel{h.model_text, h.model_file.empty() ? "(embedded RRRRR)" : h.model_file};
+    }
+    try {
+      shared_model = share_resumed_run(job, o, mine ? &*mine : nullptr);
+      if (job.rank() != 0 && !shared_model)
+        throw std::runtime_error("rank 0 could not resume the run");  // rank 0 says why
+    } catch (...) {
+      if (!run.failure) run.failure = std::current_exception();
+    }
+  }
+  if (run.failure) return run;
+  try {
+    complete_options(o);
+    set_arithmetic(o);
+    run.model = shared_model ? parse_model(shared_model->text, shared_model->name)
+                             : solve_model(o, run.resumed.get());
+    if (!resuming) choose_bisect(o, *run.model);  // a resumed run has its checkpoint's
+    run.identity = identity_of(o, *run.model);
+  } catch (...) {
+    run.failure = std::current_exception();
+  }
+  return run;
+}
+
 }  // namespace
 
 int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
   SolveOptions o = opts;
   if (o.threads == 0) o.threads = cores_of_this_rank();  // 0 still: one per core
   if (job.size() == 1) return run_solve(o);
-  std::optional<Model> model;
-  std::exception_ptr failure;
-  RunIdentity identity;
-  try {
-    validate_solve_options(o);
-    refuse_unsupported(o);
-    complete_options(o);
-    set_arithmetic(o);
-    model = solve_model(o, nullptr);
-    choose_bisect(o, *model);
-    identity = identity_of(o, *model);
-  } catch (...) {
-    failure = std::current_exception();
-  }
+  PreparedRun run = prepare_run(o, job);
+  const std::exception_ptr& failure = run.failure;
   const Agreement agreed =
-      agree_on_run(job, failure ? nullptr : &identity, failure ? exit_status_of(failure) : 0);
+      agree_on_run(job, failure ? nullptr : &run.identity, failure ? exit_status_of(failure) : 0);
   if (agreed.outcome == RankAgreement::FailedOnRank0) {
     if (job.rank() == 0) std::rethrow_exception(failure);
     return agreed.exit_code;
@@ -100,12 +136,12 @@ int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
 
   job.set_workers(WorkerState::Searching);
   if (job.rank() == 0) {
-    MpiSubtreeServer server(job, int(model->vars.size()));
-    SharedSearch shared{&*model, &server, defer_depth_for(job.size())};
+    MpiSubtreeServer server(job, int(run.model->vars.size()));
+    SharedSearch shared{&*run.model, &server, defer_depth_for(job.size()), std::move(run.resumed)};
     return run_solve(o, &shared);
   }
   try {
-    search_subtrees_for_rank0(job, *model, engine_config(o), !o.no_cert);
+    search_subtrees_for_rank0(job, *run.model, engine_config(o), !o.no_cert);
   } catch (const std::exception& e) {
     std::cerr << "aspects: rank " << job.rank() << ": " << e.what() << '\n';
     job.abort(1);

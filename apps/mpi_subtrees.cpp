@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -9,11 +10,12 @@
 #include <iterator>
 #include <map>
 #include <stdexcept>
+#include <thread>
 
 #include "certificate_writer.h"
-#include "le_reader.h"
-#include "le_writer.h"
 #include "model/determinant_factors.h"
+#include "mpi_message.h"
+#include "mpi_stop.h"
 #include "pipeline/parallel.h"
 #include "pipeline/search_phase.h"
 #include "search_part_codec.h"
@@ -23,34 +25,14 @@ namespace aspects {
 namespace {
 
 constexpr int kRankDone = 10;
+constexpr int kStop = 13;
 constexpr int kFromThread = 1000;
 constexpr int kToThread = 3000;
 constexpr int kMaxThreads = 1024;  // --threads' limit
-constexpr uint8_t kReady = 0, kSearched = 1;
-
-class StringWriter : public LeWriter {
- public:
-  void bytes(const void* p, size_t n) override {
-    s.append(static_cast<const char*>(p), n);
-  }
-  std::string s;
-};
-
-// A message that cannot be read names its sender: a rank of another build, or a bug.
-class MessageReader : public LeReader {
- public:
-  MessageReader(const std::string& b, int sender) : LeReader(b, b.size()), sender_(sender) {}
-  [[noreturn]] void fail(const std::string& why) const override {
-    throw std::runtime_error("MPI: a malformed message from rank " + std::to_string(sender_) +
-                             " (" + why + " at byte " + std::to_string(pos()) + ")");
-  }
-
- private:
-  int sender_;
-};
+constexpr uint8_t kReady = 0, kSearched = 1, kStopped = 2;
 
 std::string task_message(int32_t task, const std::vector<DeferredSubtree>& deferred) {
-  StringWriter w;
+  MessageWriter w;
   w.i32(task);
   if (task < 0) return w.s;
   const DeferredSubtree& d = deferred[task];
@@ -87,14 +69,32 @@ int defer_depth_for(int processes) {
 void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
                              int factors, const std::function<bool()>& stopped,
                              const Returned& returned) {
-  if (deferred.size() < size_t(job_.size()))
+  if (deferred.size() < size_t(job_.size()) && !stopped())  // a stopped top left the rest
     std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "
               << job_.size() << " processes: some will have nothing to search (fewer "
               << "processes, or a smaller --eps, keeps them busy)\n";
   // The subtree each (rank, thread) is searching: a part must answer the task it was given.
   std::map<std::pair<int, int>, int32_t> given;
+  // Once this process stops, the ranks searching a subtree are told to stop it (the others
+  // get no more subtrees).
+  bool told = false;
+  auto tell_stop = [&] {
+    std::vector<uint8_t> searching(job_.size(), 0);
+    for (const auto& [who, task] : given) searching[who.first] |= task >= 0;
+    for (int r = 1; r < job_.size(); ++r)
+      if (searching[r]) job_.send(r, kStop, std::string());
+    told = true;
+  };
   int done = 0;
+  auto pause = std::chrono::microseconds(20);
   while (done < job_.size() - 1) {
+    if (!told && stopped()) tell_stop();
+    if (!job_.probe(MpiJob::kAny, MpiJob::kAny)) {
+      std::this_thread::sleep_for(pause);
+      pause = std::min(pause * 2, std::chrono::microseconds(1000));
+      continue;
+    }
+    pause = std::chrono::microseconds(20);
     int sender = 0, tag = 0;
     const std::string msg = job_.receive(MpiJob::kAny, MpiJob::kAny, &sender, &tag);
     if (tag == kRankDone) {
@@ -106,14 +106,15 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     if (thread < 0 || thread >= kMaxThreads) in.fail("unexpected tag " + std::to_string(tag));
     const uint8_t kind = in.u8();
     auto it = given.find({sender, thread});
-    if (kind == kSearched) {
+    if (kind == kSearched || kind == kStopped) {
       const int32_t task = in.i32();
       if (it == given.end() || it->second != task) in.fail("a subtree it was not given");
       SearchPart part;
       read_search_part(in, part, uint32_t(nv_), uint32_t(factors), 0);
       std::string records = in.bytes(in.u64());
       if (!in.at_end()) in.fail("trailing bytes");
-      returned(task, std::move(part), std::move(records));
+      returned(task, kind == kSearched ? PartOutcome::Complete : PartOutcome::Stopped,
+               std::move(part), std::move(records));
     } else if (kind != kReady || it != given.end()) {
       in.fail("unexpected message");
     }
@@ -124,8 +125,11 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
   job_.set_workers(WorkerState::Waiting);
 }
 
-void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& config,
+void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& given,
                                bool certificate) {
+  RankStop stop(job, kStop);
+  AspectsConfig config = given;
+  config.stop = &stop.condition();
   const std::vector<Factor> factors = determinant_factors(model);
   const int nv = int(model.vars.size()), threads = std::max(1, config.threads);
   const long prec = working_precision();
@@ -133,7 +137,7 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& c
   parallel.arena().execute([&] {
     tbb::parallel_for(0, threads, [&](int thread) {
       set_working_precision(prec);  // MPFR's default precision is per thread
-      StringWriter reply;
+      MessageWriter reply;
       reply.u8(kReady);
       for (;;) {
         job.send(0, kFromThread + thread, reply.s);
@@ -153,15 +157,16 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& c
         if (!in.at_end()) in.fail("trailing bytes");
         SearchPart part;
         std::string records;
+        bool complete;
         if (certificate) {
           TreeRecordFile sink(records_path(job.rank(), thread), int(factors.size()), model.n());
-          search_subtree(model, config, factors, subtree, part, &sink);
+          complete = search_subtree(model, config, factors, subtree, part, &sink);
           records = read_file(sink.path());
         } else {
-          search_subtree(model, config, factors, subtree, part, nullptr);
+          complete = search_subtree(model, config, factors, subtree, part, nullptr);
         }
-        reply = StringWriter();
-        reply.u8(kSearched);
+        reply = MessageWriter();
+        reply.u8(complete ? kSearched : kStopped);
         reply.i32(task);
         write_search_part(reply, part, uint32_t(factors.size()));
         reply.u64(records.size());

@@ -9,9 +9,11 @@
 //     u8 0                                       (ready for a first subtree)
 //     u8 1  i32 task  part  u64 R  R bytes       (task searched: part as in
 //                                                 apps/search_part_codec.h, its records)
+//     u8 2  i32 task  part  u64 R  R bytes       (task stopped: a partial part)
 //   rank 0 -> thread s, tag kToThread + s:
 //     i32 task  i32 parent_split  nv × (f64 lo  f64 hi)   (search this)
 //     i32 -1                                              (no more: the thread ends)
+//   rank 0 -> a rank searching a subtree, tag kStop: empty (rank 0 stopped: stop searching)
 //   a rank -> rank 0, tag kRankDone: empty (all its threads have ended)
 #pragma once
 
@@ -37,7 +39,8 @@ class MpiSubtreeServer : public RemoteSubtrees {
 };
 
 // Another rank's side: `config.threads` threads ask rank 0 for subtrees and search them
-// until it has none left (config.stop is not used: a part comes back whole). With
+// until it has none left. Rank 0's stop message, or SIGINT/SIGTERM to this rank, stops the
+// subtrees being searched (config.stop is replaced): they go back partial. With
 // `certificate`, each part's records go back too. Throws on a malformed message.
 void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& config,
                                bool certificate);

@@ -42,7 +42,7 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   SolveOptions o = opts;
   // Resuming: the options and the model come from the checkpoint (checked against any
   // given again); the parts it holds are not searched again.
-  std::unique_ptr<Checkpoint> resumed = open_resumed_run(o);
+  std::unique_ptr<Checkpoint> resumed = shared ? std::move(shared->resumed) : open_resumed_run(o);
   complete_options(o);
   set_arithmetic(o);
   Model model = shared ? std::move(*shared->model) : solve_model(o, resumed.get());

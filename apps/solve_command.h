@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -52,13 +53,17 @@ class UsageError : public std::runtime_error {
 
 class RemoteSubtrees;
 struct Model;
+struct Checkpoint;
 
 // A search shared with other processes (an MPI job's rank 0: apps/mpi_solve.*): the model
-// they agreed on, who searches the other subtrees, and where the tree is cut into them.
+// they agreed on, who searches the other subtrees, where the tree is cut into them (a
+// resumed state keeps its checkpoint's cut), and the checkpoint of a resumed run, already
+// read (the options given to run_solve are then its own).
 struct SharedSearch {
   Model* model;
   RemoteSubtrees* remote;
   int defer_depth;
+  std::unique_ptr<Checkpoint> resumed;
 };
 
 int run_solve(const SolveOptions& opts, SharedSearch* shared = nullptr);

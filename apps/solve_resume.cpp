@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "aspects_version.h"
 
@@ -27,6 +29,19 @@ void adopt(const SolveOptions& o, const char* name, T& value, const T& saved,
                           " differs from the checkpoint's " + saved_text +
                           " (give the same value, or leave the option out)");
   value = saved;
+}
+
+// Whether process `pid` may still write its temporaries: not when it does not exist, nor
+// when it has ended and its parent has not collected it yet (a zombie: the rank 0 of a
+// job mpirun has just ended), which a signal 0 does not tell.
+bool may_still_write(long pid) {
+  if (kill(pid_t(pid), 0) != 0 && errno == ESRCH) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;  // not ours to judge
+  const size_t paren = line.rfind(')');  // the state follows the command's name
+  return paren == std::string::npos || paren + 2 >= line.size() ||
+         (line[paren + 2] != 'Z' && line[paren + 2] != 'X');
 }
 
 }  // namespace
@@ -69,7 +84,7 @@ int remove_stale_temporaries(const std::string& dir) {
     char* end = nullptr;
     long pid = std::strtol(name.c_str() + at + 5, &end, 10);
     if (pid <= 0 || end == name.c_str() + at + 5) continue;
-    if (kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+    if (may_still_write(pid)) continue;
     removed += fs::remove(entry.path(), ec) ? 1 : 0;
   }
   return removed;
@@ -92,6 +107,9 @@ void resume_search(Checkpoint& resumed, CertificateWriter* cert, AspectsConfig& 
       if (st.done[k]) cert->restore(int32_t(k), resumed.records[k]);
   }
   cfg.resume = &st;
+  // Its subtrees were cut at the checkpoint's depth (a distributed run's depends on P):
+  // the checkpoints this run writes say so.
+  if (st.top_done) cfg.defer_depth = resumed.header.defer_depth;
 }
 
 Model resumed_model(const SolveOptions& o, const CheckpointHeader& h) {

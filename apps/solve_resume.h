@@ -18,8 +18,9 @@ namespace aspects {
 // --resume.
 std::unique_ptr<Checkpoint> open_resumed_run(SolveOptions& o);
 
-// Hands the checkpoint's state to the engine (its finished parts are not searched again)
-// and puts the certificate records of those parts back into `cert` (null: no certificate).
+// Hands the checkpoint's state to the engine (its finished parts are not searched again,
+// the tree keeps the checkpoint's cut) and puts the certificate records of those parts
+// back into `cert` (null: no certificate).
 void resume_search(Checkpoint& resumed, CertificateWriter* cert, AspectsConfig& cfg);
 
 // Sets o's eps, precision, tau, bisector, links mode, certificate, output directory and

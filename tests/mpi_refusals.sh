@@ -5,7 +5,7 @@
 # Usage: mpi_refusals.sh CASE MPIRUN ASPECTS ROBOTS_DIR
 #   other_model           rank 1 reads another model file (MPMD: A : B): exit 2, before any work
 #   other_binary          rank 1 runs a copy of the executable with one byte more: exit 2
-#   unsupported_option    --checkpoint with 2 processes: exit 2
+#   unsupported_option    --max-boxes with 2 processes: exit 2
 #   failed_rank0          rank 0 cannot create its output directory after the ranks agreed:
 #                         the job ends (MPI_Abort) with rank 0's message, exit 1
 #   dead_rank             rank 1 killed (SIGKILL) while it searches: the job fails, mpirun
@@ -51,9 +51,9 @@ case $case_ in
     ;;
   unsupported_option)
     "$mpirun" --oversubscribe -n 2 "$aspects" solve "$robots/prrp.robot" --eps 0.1 \
-      --checkpoint 5 --out "$out" > "$work/log" 2>&1
+      --max-boxes 100 --out "$out" > "$work/log" 2>&1
     status=$?
-    expect 2 "--checkpoint is not supported in a distributed run"
+    expect 2 "--max-boxes is not supported in a distributed run"
     [ ! -e "$out" ] || fail "the output directory was made"
     ;;
   failed_rank0)

@@ -30,7 +30,7 @@ struct AspectsConfig {
   BisectorKind bisector = BisectorKind::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
   // Other processes that search subtrees too (an MPI job); null: this process alone.
-  // Not with `resume`, `checkpoint` or a box budget (their state is this process's).
+  // Not with a box budget: it counts this process's boxes only.
   RemoteSubtrees* remote = nullptr;
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
   // Limits and signals (search/stop_condition.h), asked by every phase. A stopped search

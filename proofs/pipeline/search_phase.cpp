@@ -127,22 +127,24 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
   const long prec = working_precision();
   SubtreeQueue queue(st.done);
   CertificateSink* cert = config.certificate;
-  std::mutex cert_lock;  // the writer's list of subtrees grows as they are taken
+  // The writer's list of subtrees grows as they are taken; a checkpoint reads it.
+  std::mutex cert_lock;
   std::exception_ptr remote_error, local_error;
   std::thread server([&] {
     try {
       config.remote->serve(
           queue, st.deferred, int(factors.size()), [&] { return config.stopped(); },
-          [&](int32_t k, SearchPart&& part, std::string&& records) {
+          [&](int32_t k, PartOutcome outcome, SearchPart&& part, std::string&& records) {
             count_for_progress(part, st.deferred[k].box, stats);
             if (config.subtree_observer.returned)
               config.subtree_observer.returned(k, part, records.size());
             st.parts[k] = std::move(part);
-            if (cert) {
-              std::lock_guard<std::mutex> g(cert_lock);
-              cert->restore(k, records);
-            }
-            checkpoints.mark_done(k);
+            std::lock_guard<std::mutex> g(cert_lock);
+            if (cert) cert->restore(k, records);
+            if (outcome == PartOutcome::Complete) checkpoints.mark_done(k);
+            // Another rank stopped by a signal of its own stops the run: its part is partial.
+            else if (config.stop) config.stop->request(StopReason::Signal);
+            if (config.checkpoint_seconds > 0) checkpoints.write(false);
           });
     } catch (...) {
       remote_error = std::current_exception();
@@ -165,6 +167,10 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
             checkpoints.mark_done(k);
           if (config.subtree_observer.searched_here)
             config.subtree_observer.searched_here(k, st.parts[k], clock.work());
+          if (config.checkpoint_seconds > 0) {
+            std::lock_guard<std::mutex> g(cert_lock);  // the writer's list may not grow meanwhile
+            checkpoints.write(false);
+          }
         }
       }, tbb::simple_partitioner());
     });
@@ -222,8 +228,6 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
   if (config.resume && st.top_done) stats.resumed_share = resumed_share(st, stats);
   Checkpointer checkpoints(config, st);
   if (config.remote) {
-    if (config.resume || config.checkpoint)
-      throw std::logic_error("a distributed search neither resumes nor checkpoints");
     search_with_remote(model, config, factors, st, stats, tick, parallel, checkpoints);
   } else {
     std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);

@@ -29,7 +29,7 @@ struct SearchOutcome {
 // One deferred subtree searched to the end from its box alone, its certificate records
 // into `sink` (may be null): another process's share of a distributed search
 // (remote_subtrees.h). Its part is the one search_phase would have made. False when
-// config.stop stopped it (another process gives none: its parts come back whole).
+// config.stop stopped it (the part is then partial, its cells left unexplored).
 bool search_subtree(const Model& model, const AspectsConfig& config,
                     const std::vector<Factor>& factors, const DeferredSubtree& subtree,
                     SearchPart& part, TreeSink* sink);
