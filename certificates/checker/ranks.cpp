@@ -6,6 +6,7 @@
 // is one rank and nothing to exchange.
 #include <openssl/evp.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -20,12 +21,6 @@ namespace cc::ranks {
 namespace {
 int rank_ = 0, size_ = 1;
 
-// Open MPI's and MPICH's launchers (and srun --mpi=pmi2) tell the job's size.
-int launcher_size() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-    if (const char* v = std::getenv(name)) return std::atoi(v);
-  return 0;
-}
 
 // SHA-256 of a file's bytes; "" if it cannot be read.
 std::string file_sha256(const char* path) {
@@ -59,7 +54,11 @@ std::string start(int* argc, char*** argv) {
   (void)argc;
   (void)argv;
   // P copies of a whole check would each print the same line: a mistake, said before work.
-  if (launcher_size() > 1)
+  // Open MPI's and MPICH's launchers (and srun --mpi=pmi2) tell the job's size.
+  int launched = 0;
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* v = std::getenv(name)) launched = std::max(launched, std::atoi(v));
+  if (launched > 1)
     return "started by an MPI launcher, but this check_cert is built without MPI "
            "(configure with -DASPECTS_MPI=ON)";
   return "";
