@@ -91,8 +91,8 @@ void add_solve(CLI::App& app, Commands& c) {
                     "write each part of the search's cost to FILE (CSV: boxes, CPU and wall "
                     "seconds, message bytes), for the scaling study; the result is unchanged");
   solve->add_option("--cut-depth", so.cut_depth,
-                    "cut the search tree into subtrees at this depth (1-16; default 8, deeper "
-                    "in an MPI job of more than 32 processes); the result is unchanged");
+                    "cut the search tree into subtrees at this depth (1-16; default 8, in an "
+                    "MPI job deep enough for 64 subtrees a thread); the result is unchanged");
 }
 
 void add_query(CLI::App& app, Commands& c) {

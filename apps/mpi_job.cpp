@@ -150,6 +150,16 @@ void MpiJob::finish(int exit_code) {
   workers_ = WorkerState::Idle;
 }
 
+int MpiJob::ranks_on_this_node() const {
+  MPI_Comm node;
+  check(MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node),
+        "MPI_Comm_split_type");
+  int n = 1;
+  MPI_Comm_size(node, &n);
+  MPI_Comm_free(&node);
+  return n;
+}
+
 int MpiJob::wait_for_exit_status() {
   std::string status;
   for (int tag = -1; tag != kExitStatusTag;) status = receive(0, kAny, nullptr, &tag);

@@ -31,6 +31,8 @@ class MpiJob {
 
   int rank() const { return rank_; }
   int size() const { return size_; }
+  // The ranks on this rank's node (shared memory), this one included.
+  int ranks_on_this_node() const;
 
   // Returns once `bytes` are sent (the buffer reusable).
   void send(int to, int tag, const std::string& bytes);

@@ -134,10 +134,14 @@ int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
     throw std::runtime_error(refusal_message(agreed));
   }
 
+  const int node_ranks = job.ranks_on_this_node();  // collective: every rank asks
   job.set_workers(WorkerState::Searching);
   if (job.rank() == 0) {
     MpiSubtreeServer server(job, int(run.model->vars.size()));
-    SharedSearch shared{&*run.model, &server, defer_depth_for(job.size()), std::move(run.resumed)};
+    SharedSearch shared{&*run.model, &server, defer_depth_for(job.size(), o.threads), std::move(run.resumed)};
+    // After the search the other ranks only wait (polling with sleeps): rank 0's later
+    // phases take the threads of those on its node (2 ranks × 1 thread on 2 cores: 2).
+    shared.later_threads = o.threads * node_ranks;
     return run_solve(o, &shared);
   }
   try {

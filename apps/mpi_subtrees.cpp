@@ -61,9 +61,9 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
-int defer_depth_for(int processes) {
-  const int depth = int(std::ceil(std::log2(8.0 * std::max(1, processes))));
-  return std::max(8, depth);
+int defer_depth_for(int processes, int threads) {
+  const double subtrees = 64.0 * std::max(1, processes) * std::max(1, threads);
+  return std::max(8, int(std::ceil(std::log2(subtrees))));
 }
 
 void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,

@@ -52,6 +52,7 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   if (shared) {
     cfg.remote = shared->remote;
     cfg.defer_depth = shared->defer_depth;
+    cfg.later_threads = shared->later_threads;
   }
   if (o.cut_depth != -1) cfg.defer_depth = o.cut_depth;
   std::unique_ptr<SubtreeStats> subtree_stats;

@@ -64,6 +64,7 @@ struct SharedSearch {
   RemoteSubtrees* remote;
   int defer_depth;
   std::unique_ptr<Checkpoint> resumed;
+  int later_threads = 0;  // threads of the phases after the search (0: --threads)
 };
 
 int run_solve(const SolveOptions& opts, SharedSearch* shared = nullptr);

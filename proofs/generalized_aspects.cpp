@@ -1,3 +1,5 @@
+#include <memory>
+
 #include "generalized_aspects.h"
 
 #include "pipeline/csnc_phase.h"
@@ -44,14 +46,18 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   SearchOutcome searched = search_phase(model, config, out.factors, parallel, clock);
   out.boxes = std::move(searched.boxes);
   out.tree = std::move(searched.tree);
+  // The later phases' results do not depend on the threads either (parallel.h).
+  std::unique_ptr<Parallel> more;
+  if (config.later_threads > config.threads) more = std::make_unique<Parallel>(config.later_threads);
+  Parallel& later = more ? *more : parallel;
   out.diagnostics = searched.diagnostics;
   count_leaves(out);
 
   // M streams through the links and the separation's first pass, never held whole.
   std::vector<bool> periodic;
   for (const auto& v : model.vars) periodic.push_back(v.periodic);
-  LinkPhase links(model, config, out.boxes, parallel);
-  SeparationPhase separation(out.boxes, parallel);
+  LinkPhase links(model, config, out.boxes, later);
+  SeparationPhase separation(out.boxes, later);
   const bool whole_graph = stream_neighbor_pairs(
       out.tree, out.boxes.ends(), periodic,
       [&](const std::vector<NeighborPair>& piece) {
@@ -59,7 +65,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
         separation.add(piece);
         links.add(piece);
       },
-      parallel.for_each(), [&] { return config.stopped(); });
+      later.for_each(), [&] { return config.stopped(); });
   LinkOutcome linked = links.finish();
   out.neighbors = std::move(linked.neighbors);
   out.certified_links = std::move(linked.certified_links);
@@ -74,7 +80,7 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   clock.lap("components and separation");
 
   out.cuspidal = witness_phase(model, config, periodic, out.boxes, out.csnc,
-                               int(out.csnc_sizes.size()), parallel, clock);
+                               int(out.csnc_sizes.size()), later, clock);
   if (config.stop && config.stop->stopped()) out.stopped_by = config.stop->reason();
   out.seconds = clock.total_seconds();
   out.phase_seconds = clock.seconds();

@@ -27,6 +27,9 @@ struct AspectsConfig {
   // components not yet joined (a spanning forest: the same CSNCs, far fewer proofs).
   bool all_links = false;
   int threads = 1;
+  // Threads of the phases after the search, if more (0: `threads`): in an MPI job, rank 0
+  // takes over the cores of the ranks on its node, idle once the search is over.
+  int later_threads = 0;
   BisectorKind bisector = BisectorKind::RoundRobin;
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
   // Other processes that search subtrees too (an MPI job); null: this process alone.
