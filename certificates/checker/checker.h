@@ -486,7 +486,9 @@ class NeighbourSweep : public PairSweep {
     float lo, hi;    // on d, shifted by 2πk
     float elo, ehi;  // on e (the whole line if there is no e)
     float glo, ghi;  // on g (likewise)
-    int id, k;
+    int32_t id;
+    int16_t k;
+    uint16_t strip;  // the strip of elo: a pair's strip is the larger of its two
   };
   const OutBoxes& R_;
   std::vector<int> slot_;  // per variable: its column in a row of shifted_, -1 if not periodic

@@ -121,7 +121,8 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
           glo = float_down(R.box(b)[2 * g_]);
           ghi = -float_down(-R.box(b)[2 * g_ + 1]);
         }
-        put({float_down(s[0]), -float_down(-s[1]), elo, ehi, glo, ghi, int(b), k});
+        put({float_down(s[0]), -float_down(-s[1]), elo, ehi, glo, ghi, int32_t(b), int16_t(k),
+             uint16_t(strip(elo))});
       }
   };
   strip_start_.assign(size_t(strips_) + 1, 0);
@@ -169,7 +170,7 @@ bool NeighbourSweep::sweep_strip(int t, const std::function<bool(int, int)>& put
     for (size_t j = i + 1; j < end && items_[j].lo <= items_[i].hi; ++j) {
       const Item &p = items_[i], &q = items_[j];
       if (p.id == q.id || (p.k && q.k) || q.elo > p.ehi || p.elo > q.ehi) continue;
-      if (strip(double(std::max(p.elo, q.elo))) != t) continue;  // met in another strip too
+      if (std::max(p.strip, q.strip) != t) continue;  // met in another strip too
       if (g_apart(p, q)) continue;
       // The sweep only proposes; FORMAT.md's test decides: for every v (d too), a_v meets
       // b_v + 2πk for some k, b the larger id, its shifted ends rounded outward.
