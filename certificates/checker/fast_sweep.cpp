@@ -1,8 +1,9 @@
 // fast_sweep.cpp — speed layer: the neighbourhood graph M by a sort-and-sweep whose items
 // are floats rounded outward (a superset of the overlaps), in strips of a second variable
-// swept on T threads; not O(N²), and not 3^(periodic variables) copies: only the sweep
-// dimension is shifted, the other variables are tested shift by shift. Its pairs go
-// straight to the visitor; M is never held. PlainSweep (bound.cpp) finds the same pairs.
+// swept on T threads, a third variable's ends (periodic or not) tested in the items; not
+// O(N²), and not 3^(periodic variables) copies: only the sweep dimension is shifted, the
+// other variables are tested shift by shift. Its pairs go straight to the visitor; M is
+// never held. PlainSweep (bound.cpp) finds the same pairs.
 #include "checker.h"
 
 #include <algorithm>
