@@ -22,6 +22,23 @@ AspectsResult solve(const std::string& file, double eps) {
   return compute_aspects(m, cfg);
 }
 
+// b is a (the reference run's) result: the same boxes bit for bit, their columns, the tree,
+// the certified links and the CSNCs.
+void expect_same_result(const AspectsResult& a, const AspectsResult& b) {
+  ASSERT_EQ(a.boxes.size(), b.boxes.size());
+  for (int i = 0; i < a.boxes.size(); ++i)
+    for (int v = 0; v < a.boxes.nv(); ++v) {
+      ASSERT_EQ(a.boxes.lo(i, v), b.boxes.lo(i, v)) << "box " << i;
+      ASSERT_EQ(a.boxes.hi(i, v), b.boxes.hi(i, v)) << "box " << i;
+    }
+  EXPECT_EQ(a.boxes.certified_column(), b.boxes.certified_column());
+  EXPECT_EQ(a.boxes.kind_column(), b.boxes.kind_column());
+  EXPECT_EQ(a.boxes.sign_column(), b.boxes.sign_column());
+  EXPECT_EQ(a.tree.size(), b.tree.size());
+  EXPECT_EQ(a.certified_links, b.certified_links);
+  EXPECT_EQ(a.csnc_sizes, b.csnc_sizes);
+}
+
 void expect_consistent(const AspectsResult& r) {
   // Bookkeeping that must hold whatever the robot.
   EXPECT_EQ(r.boxes.size(), r.solutions + r.undecided);
@@ -107,18 +124,7 @@ TEST(GeneralizedAspects, ParallelSubtreesGiveTheSequentialResult) {
     cfg.threads = threads;
     cfg.defer_depth = 4;
     AspectsResult b = compute_aspects(m2, cfg);
-    ASSERT_EQ(a.boxes.size(), b.boxes.size());
-    for (int i = 0; i < a.boxes.size(); ++i)
-      for (int v = 0; v < a.boxes.nv(); ++v) {
-        ASSERT_EQ(a.boxes.lo(i, v), b.boxes.lo(i, v)) << "box " << i;
-        ASSERT_EQ(a.boxes.hi(i, v), b.boxes.hi(i, v)) << "box " << i;
-      }
-    EXPECT_EQ(a.boxes.certified_column(), b.boxes.certified_column());
-    EXPECT_EQ(a.boxes.kind_column(), b.boxes.kind_column());
-    EXPECT_EQ(a.boxes.sign_column(), b.boxes.sign_column());
-    EXPECT_EQ(a.tree.size(), b.tree.size());
-    EXPECT_EQ(a.certified_links, b.certified_links);
-    EXPECT_EQ(a.csnc_sizes, b.csnc_sizes);
+    ASSERT_NO_FATAL_FAILURE(expect_same_result(a, b)) << threads << " threads";
   }
 }
 
@@ -159,17 +165,7 @@ TEST(GeneralizedAspects, RemoteSubtreesGiveTheSameResult) {
   cfg.remote = &remote;
   AspectsResult b = compute_aspects(m2, cfg);
   EXPECT_GT(remote.searched, 0);
-  ASSERT_EQ(a.boxes.size(), b.boxes.size());
-  for (int i = 0; i < a.boxes.size(); ++i)
-    for (int v = 0; v < a.boxes.nv(); ++v) {
-      ASSERT_EQ(a.boxes.lo(i, v), b.boxes.lo(i, v)) << "box " << i;
-      ASSERT_EQ(a.boxes.hi(i, v), b.boxes.hi(i, v)) << "box " << i;
-    }
-  EXPECT_EQ(a.boxes.kind_column(), b.boxes.kind_column());
-  EXPECT_EQ(a.boxes.sign_column(), b.boxes.sign_column());
-  EXPECT_EQ(a.tree.size(), b.tree.size());
-  EXPECT_EQ(a.certified_links, b.certified_links);
-  EXPECT_EQ(a.csnc_sizes, b.csnc_sizes);
+  expect_same_result(a, b);
 }
 
 TEST(GeneralizedAspects, RemoteSearchStoppedAndResumedGivesTheSameResult) {
@@ -216,15 +212,7 @@ TEST(GeneralizedAspects, RemoteSearchStoppedAndResumedGivesTheSameResult) {
   again.resume = &saved;
   AspectsResult b = compute_aspects(m3, again);
   ASSERT_TRUE(b.complete());
-  ASSERT_EQ(a.boxes.size(), b.boxes.size());
-  for (int i = 0; i < a.boxes.size(); ++i)
-    for (int v = 0; v < a.boxes.nv(); ++v) {
-      ASSERT_EQ(a.boxes.lo(i, v), b.boxes.lo(i, v)) << "box " << i;
-      ASSERT_EQ(a.boxes.hi(i, v), b.boxes.hi(i, v)) << "box " << i;
-    }
-  EXPECT_EQ(a.boxes.kind_column(), b.boxes.kind_column());
-  EXPECT_EQ(a.tree.size(), b.tree.size());
-  EXPECT_EQ(a.csnc_sizes, b.csnc_sizes);
+  expect_same_result(a, b);
 }
 
 TEST(GeneralizedAspects, SpanningLinksGiveTheSameCsncsAsAllLinks) {
