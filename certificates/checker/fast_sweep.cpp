@@ -64,38 +64,28 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
     row_[b] = int32_t(shifted_.size() / (2 * P_));
     shifted_.insert(shifted_.end(), row.begin(), row.end());
   }
-  // Sweep on the dimension d where boxes are thinnest relative to their spread: items are
-  // the boxes and, if d is periodic, their copies shifted in d that can meet the hull.
-  int d = 0;
-  double best = -1;
-  for (int v = 0; v < nv; ++v) {
-    const double spread = (hhi[v] - hlo[v]) / (mean[v] + 1e-300);
-    if (spread > best) {
-      best = spread;
-      d = v;
+  // The variable v with `take(v)` where boxes are thinnest relative to their spread; -1: none.
+  const auto thinnest = [&](const std::function<bool(int)>& take) {
+    int best_v = -1;
+    double best = -1;
+    for (int v = 0; v < nv; ++v) {
+      const double spread = (hhi[v] - hlo[v]) / (mean[v] + 1e-300);
+      if (take(v) && spread > best) {
+        best = spread;
+        best_v = v;
+      }
     }
-  }
+    return best_v;
+  };
+  // Sweep on d: items are the boxes and, if d is periodic, their copies shifted in d that
+  // can meet the hull.
+  const int d = std::max(0, thinnest([](int) { return true; }));
   // A second, non-periodic variable e, kept in the items: pairs apart on e are dropped
   // before the test reads the boxes (3-RPR at eps 0.3: 3.8e11 candidates on d).
-  int e = -1;
-  best = -1;
-  for (int v = 0; v < nv; ++v) {
-    const double spread = (hhi[v] - hlo[v]) / (mean[v] + 1e-300);
-    if (v != d && !periodic[v] && spread > best) {
-      best = spread;
-      e = v;
-    }
-  }
+  const int e = thinnest([&](int v) { return v != d && !periodic[v]; });
   // A third variable g, periodic or not, whose ends the items hold too: on 3-RPR at eps 0.8
   // the pose angle separates 4.6e8 of the 5.3e8 pairs that meet on d and e (2.6e7 do).
-  best = -1;
-  for (int v = 0; v < nv; ++v) {
-    const double spread = (hhi[v] - hlo[v]) / (mean[v] + 1e-300);
-    if (v != d && v != e && spread > best) {
-      best = spread;
-      g_ = v;
-    }
-  }
+  g_ = thinnest([&](int v) { return v != d && v != e; });
   // Strips of e, four mean widths wide: each item goes into every strip its e-interval
   // meets, and each strip is swept on its own, so that boxes far apart on e are never
   // candidates (3-RPR at eps 1: 8.0e9 candidates on d, 3.0e8 of them meet on e).
