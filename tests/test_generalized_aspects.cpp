@@ -3,6 +3,8 @@
 // aspects (Table 1), plus end-to-end runs of the 3-DOF robots at coarse precision.
 #include <gtest/gtest.h>
 
+#include <mpfr.h>
+
 #include <numeric>
 
 #include "generalized_aspects.h"
@@ -146,6 +148,9 @@ class ThreadAsRemote : public RemoteSubtrees {
       returned(k, complete ? PartOutcome::Complete : PartOutcome::Stopped, std::move(part),
                std::string());
     }
+    // This thread ends here, and MPFR's caches (π) are per thread: a real server thread
+    // only passes messages and never fills them.
+    mpfr_free_cache();
   }
   int searched = 0, stopped_parts = 0;
 
