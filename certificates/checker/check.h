@@ -54,6 +54,7 @@ struct Checker {
   bool doubles = true;  // intervals of doubles at 53 bits (off with --trusted-only)
   size_t pairs_ = 0;  // pairs of M, for the statistics
   double graph_seconds_ = 0;  // building and sweeping M, for the statistics
+  double tree_seconds_ = 0;   // the tree section: its records and their proofs, likewise
   // Last, so that it is destroyed first: its helper threads finish the proofs they hold
   // (which read the members above) before anything they read is gone, whatever was thrown.
   std::unique_ptr<ProofBatch> batch;
