@@ -28,7 +28,7 @@ constexpr size_t kRun = 32;  // consecutive jobs a worker takes at a time
 size_t batch_size() {
   const char* e = std::getenv("CHECK_CERT_BATCH");
   const long v = e ? std::atol(e) : 0;
-  return (v >= 1 && v <= (1 << 20) ? size_t(v) : 1024) * size_t(ranks::size());
+  return (v >= 1 && v <= (1 << 20) ? size_t(v) : 4096) * size_t(ranks::size());
 }
 }  // namespace
 
