@@ -13,6 +13,13 @@
 
 namespace cc {
 
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+}  // namespace
+
 void Checker::header() {
   rd.next();
   if (rd.size() != 2 || rd.kind() != "aspects-certificate")
@@ -155,7 +162,7 @@ size_t Checker::claims(const CheckOptions& o) {
   // A real subdivision has a few neighbours per box, while S records that share one IMAGE
   // over many cells make M quadratic (10^5 boxes: 5·10^9 pairs): rejected instead.
   const size_t max_pairs = (size_t(1) << 22) + 64 * R.size();
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   std::unique_ptr<PairSweep> M;
   if (o.trusted_only) M.reset(new PlainSweep(R, periodic, ev->two_pi));
   else M.reset(new NeighbourSweep(R, periodic, ev->two_pi));
@@ -173,7 +180,7 @@ size_t Checker::claims(const CheckOptions& o) {
     rejected(claim_rec,
              "too many sign classes for the neighbourhood graph (2^32 + 2^10 steps per box)");
   }
-  graph_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  graph_seconds_ = seconds_since(t0);
   out.claimed = claim;
   if (claim > out.recomputed) {
     const std::string both = std::to_string(claim) + " exceeds the recomputed ";
@@ -190,7 +197,7 @@ size_t Checker::claims(const CheckOptions& o) {
 }
 
 void Checker::run(const CheckOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
     work_base = std::max(10, std::min(40, std::atoi(e)));
   doubles = !o.trusted_only;
@@ -217,23 +224,23 @@ void Checker::run(const CheckOptions& o) {
                       uint64_t(batch ? batch->refute_boxes() : prover->refute_boxes)};
   ranks::sum(done, 2);
   if (o.quiet) return;
-  const auto elapsed = std::chrono::steady_clock::now() - t0;
   std::fprintf(stderr,
                "check_cert: %ld refutations (%ld boxes), %llu node evaluations, tree %.2f s, %zu "
                "pairs in M (%.2f s), recomputed lower bound %ld, %d thread%s%s, %.2f s\n",
                long(done[0]), long(done[1]), (unsigned long long)(batch ? batch->work : ev->work),
-               tree_seconds_, pairs_, graph_seconds_, out.recomputed, threads, threads > 1 ? "s" : "",
+               tree_seconds_, pairs_, graph_seconds_, out.recomputed, threads,
+               threads > 1 ? "s" : "",
                ranks::size() > 1 ? (" x " + std::to_string(ranks::size()) + " ranks").c_str()
                                  : "",
-               std::chrono::duration<double>(elapsed).count());
+               seconds_since(t0));
 }
 
 // Every section after the header; the proofs are queued and judged in record order.
 void Checker::body(const CheckOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   tree();
   flush();  // the tree's last proofs, so that its time is theirs
-  tree_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  tree_seconds_ = seconds_since(t0);
   linked.reset(R.size());
   rd.next();
   section("links", "K", [&](int64_t) { link(); });
