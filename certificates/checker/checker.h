@@ -480,8 +480,9 @@ class NeighbourSweep : public PairSweep {
   size_t seam_boxes() const { return P_ ? shifted_.size() / (2 * P_) : 0; }
 
  private:
+  static constexpr int kMaxStrips = 1 << 16;  // so that a strip's index fits Item::strip
   // Ends as floats rounded outward: a superset of the true overlaps, which run() then
-  // tests on the boxes' doubles (24 bytes an item instead of 32).
+  // tests on the boxes' doubles (32 bytes an item instead of 56).
   struct Item {
     float lo, hi;    // on d, shifted by 2πk
     float elo, ehi;  // on e (the whole line if there is no e)

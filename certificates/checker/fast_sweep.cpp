@@ -92,7 +92,8 @@ NeighbourSweep::NeighbourSweep(const OutBoxes& R, const std::vector<bool>& perio
   if (e >= 0 && mean[e] > 0 && hhi[e] > hlo[e]) {
     e_lo_ = hlo[e];
     e_width_ = 4 * mean[e];
-    strips_ = int(std::max(1.0, std::min(65536.0, std::ceil((hhi[e] - hlo[e]) / e_width_))));
+    const double wanted = std::ceil((hhi[e] - hlo[e]) / e_width_);
+    strips_ = int(std::max(1.0, std::min(double(kMaxStrips), wanted)));
   }
   // The items, made twice (to count each strip's, then to place them) rather than held
   // twice: e's ends as floats rounded outward, a superset of the true overlaps on e, used
