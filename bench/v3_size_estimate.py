@@ -65,14 +65,12 @@ def zsize(path, level):
     return len(p.stdout)
 
 
-def grid_offset(x, lo, hi, scale, outward):
-    """x's place on the grid of [lo, hi]: steps of (hi - lo)*scale from lo, rounded down
-    (or up when `outward`, for an end that may only move away)."""
+def steps(dist, lo, hi, scale, rnd=math.floor):
+    """A distance in steps of the grid of [lo, hi] ((hi - lo)*scale each), rounded by `rnd`
+    (down for an end moved inward, so that it only moves back out; up for an end outside
+    [lo, hi]); 0 on an empty width."""
     u = (hi - lo) * scale
-    if not u > 0:
-        return 0
-    t = (x - lo) / u
-    return math.ceil(t) if outward else math.floor(t)
+    return rnd(dist / u) if u > 0 else 0
 
 
 def estimate(path, grid, out):
@@ -87,7 +85,7 @@ def estimate(path, grid, out):
         stats[kind][1] += len(rec)
         out.write(rec)
 
-    def signs(field):
+    def signs(field):  # also a link's shift: the same three characters
         bits = 0
         for i, ch in enumerate(field if field != "." else ""):
             bits |= {"0": 0, "+": 1, "-": 2}[ch] << (2 * i)
@@ -109,13 +107,13 @@ def estimate(path, grid, out):
                     if w and w[0] in ("pose", "command"):
                         command.append(w[0] == "command")
                 nv, n = len(command), sum(command)
+                cmd = [v for v in range(nv) if command[v]]
+                pose = [v for v in range(nv) if not command[v]]
                 continue
             w = line.split()
             if not w:
                 continue
             k = w[0]
-            cmd = [v for v in range(nv) if command[v]]
-            pose = [v for v in range(nv) if not command[v]]
             if k == "domain":
                 ends = [float.fromhex(x) for x in w[1:]]
                 stack = [[(ends[2 * v], ends[2 * v + 1]) for v in range(nv)]]
@@ -123,8 +121,8 @@ def estimate(path, grid, out):
                 cell = stack[-1]
                 v, lo, hi = int(w[1]), float.fromhex(w[2]), float.fromhex(w[3])
                 clo, chi = cell[v]
-                klo = grid_offset(lo, clo, chi, scale, False)
-                khi = max(0, math.floor((chi - hi) / ((chi - clo) * scale))) if chi > clo else 0
+                klo = steps(lo - clo, clo, chi, scale)
+                khi = steps(chi - hi, clo, chi, scale)
                 emit("P", 0 << 5 | v, varint(klo) + varint(khi))
                 u = (chi - clo) * scale
                 cell[v] = (clo + klo * u, chi - khi * u)
@@ -132,7 +130,7 @@ def estimate(path, grid, out):
                 cell = stack.pop()
                 v, x = int(w[1]), float.fromhex(w[2])
                 clo, chi = cell[v]
-                d = round((x - clo) / ((chi - clo) * scale)) - half
+                d = steps(x - clo, clo, chi, scale, round) - half
                 emit("B", 1 << 5 | v, zigzag(d))
                 right, left = list(cell), list(cell)
                 right[v] = (x, chi)
@@ -159,11 +157,11 @@ def estimate(path, grid, out):
                 for j, v in enumerate(cmd):
                     clo, chi = cell[v]
                     u = (chi - clo) * scale
-                    a = max(0, math.ceil((clo - qt[2 * j]) / u)) if u > 0 else 0
-                    b = max(0, math.ceil((qt[2 * j + 1] - chi) / u)) if u > 0 else 0
+                    a = max(0, steps(clo - qt[2 * j], clo, chi, scale, math.ceil))
+                    b = max(0, steps(qt[2 * j + 1] - chi, clo, chi, scale, math.ceil))
                     qlo, qhi = clo - a * u, chi + b * u
-                    c = max(0, grid_offset(img[2 * j], qlo, qhi, scale, False))
-                    d = max(0, math.floor((qhi - img[2 * j + 1]) / ((qhi - qlo) * scale))) if qhi > qlo else 0
+                    c = max(0, steps(img[2 * j] - qlo, qlo, qhi, scale))
+                    d = max(0, steps(qhi - img[2 * j + 1], qlo, qhi, scale))
                     body += varint(a) + varint(b) + varint(c) + varint(d)
                     box[v] = (img[2 * j], img[2 * j + 1])
                 boxes.append(box)
@@ -174,10 +172,7 @@ def estimate(path, grid, out):
                 vals = [float.fromhex(x) for x in w[4:]]
                 wit, qt = vals[0:n], vals[n:3 * n]
                 body = bytearray(varint(a - last_a if a >= last_a else a) + varint(b - a))
-                bits = 0
-                for i, ch in enumerate(shift):
-                    bits |= {"0": 0, "+": 1, "-": 2}[ch] << (2 * i)
-                body += bits.to_bytes((2 * nv + 7) // 8, "little")
+                body += signs(shift)
                 last_a = a
                 inter = []
                 for v in range(nv):
@@ -186,13 +181,11 @@ def estimate(path, grid, out):
                                   min(boxes[a][v][1], boxes[b][v][1] + s)))
                 for j, v in enumerate(pose):
                     lo, hi = inter[v]
-                    body += zigzag(grid_offset(wit[j], lo, hi, scale, False) - half)
+                    body += zigzag(steps(wit[j] - lo, lo, hi, scale) - half)
                 for j, v in enumerate(cmd):
                     lo, hi = inter[v]
-                    u = (hi - lo) * scale
-                    a_ = math.ceil((lo - qt[2 * j]) / u) if u > 0 else 0
-                    b_ = math.ceil((qt[2 * j + 1] - hi) / u) if u > 0 else 0
-                    body += zigzag(a_) + zigzag(b_)
+                    body += zigzag(steps(lo - qt[2 * j], lo, hi, scale, math.ceil))
+                    body += zigzag(steps(qt[2 * j + 1] - hi, lo, hi, scale, math.ceil))
                 emit("K", 6 << 5, bytes(body))
             elif k == "csnc":
                 ids = [int(x) for x in w[3:]]
