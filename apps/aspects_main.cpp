@@ -61,6 +61,12 @@ void add_solve(CLI::App& app, Commands& c) {
                   "write the certificate compressed by zstd, as aspects.cert.zst (check_cert "
                   "reads it as it reads the text; about 3x smaller)")
       ->excludes(no_cert);
+  solve->add_option("--cert-format", so.cert_format,
+                    "certificate format: 2 (text) or 3 (the search tree, links and CSNCs in "
+                    "binary, about 5x smaller; ends moved onto the grids it codes compactly)")
+      ->check(CLI::IsMember({2, 3}))
+      ->default_val(2)
+      ->excludes(no_cert);
   solve->add_flag("--all-links", so.all_links,
                   "prove every link between neighbouring solution boxes (default: only those "
                   "that join two components; the same CSNCs)");

@@ -26,8 +26,9 @@ constexpr size_t kHash = 64;
 
 RunIdentity identity_of(const SolveOptions& o, const Model& m) {
   char opts[256];
-  std::snprintf(opts, sizeof opts, "eps %a prec %ld tau %a bisect %s mpfi-only %d no-cert %d",
-                o.eps, o.prec, o.tau, o.bisect.c_str(), int(o.mpfi_only), int(o.no_cert));
+  std::snprintf(opts, sizeof opts,
+                "eps %a prec %ld tau %a bisect %s mpfi-only %d no-cert %d cert-format %d", o.eps,
+                o.prec, o.tau, o.bisect.c_str(), int(o.mpfi_only), int(o.no_cert), o.cert_format);
   return {sha256_hex(executable_bytes()), sha256_hex(m.source), sha256_hex(opts)};
 }
 

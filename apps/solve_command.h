@@ -19,6 +19,7 @@ struct SolveOptions {
   bool progress = false;
   bool no_cert = false;
   bool compress_cert = false;  // aspects.cert.zst instead of aspects.cert
+  int cert_format = 2;  // 3: the compact format (certificates/compact_records.h)
   bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
   bool quiet = false;
   bool mpfi_only = false;  // no double fast path at 53 bits (core/numerics/interval.h)

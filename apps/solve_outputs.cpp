@@ -60,7 +60,7 @@ std::unique_ptr<CertificateWriter> open_outputs(const SolveOptions& o, const Mod
   if (o.no_cert) return nullptr;
   return std::make_unique<CertificateWriter>(
       o.out_dir + (o.compress_cert ? "/aspects.cert.zst" : "/aspects.cert"), model, o.prec, o.tau,
-      o.eps, o.compress_cert);
+      o.eps, o.compress_cert, o.cert_format);
 }
 
 void write_solve_outputs(const SolveOptions& o, const Model& model, CertificateWriter* cert,

@@ -32,8 +32,9 @@ std::string sha256_hex(const std::string& data) {
 }  // namespace
 
 CertificateWriter::CertificateWriter(const std::string& path, const Model& model,
-                                     long precision, double tau, double eps, bool compress)
-    : file_(path), compressed_(compress) {
+                                     long precision, double tau, double eps, bool compress,
+                                     int format)
+    : file_(path), compressed_(compress), format_(format), command_(model.command) {
   f_ = file_.stream();
   // Level 3 (zstd's default) on one helper thread, beside the writing of the records
   // (bench/RESULTS.md has the sizes).
@@ -43,7 +44,7 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
   static char buffer[1 << 20];
   std::setvbuf(f_, buffer, _IOFBF, sizeof buffer);
   n_ = model.n();
-  line("aspects-certificate 2");
+  line("aspects-certificate " + std::to_string(format));
   line(std::string("tool aspects ") + kToolVersion);
   line("model " + std::to_string(model.source.size()) + " " + sha256_hex(model.source));
   std::fwrite(model.source.data(), 1, model.source.size(), f_);
@@ -95,6 +96,11 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
   put("domain");
   for (const auto& x : domain) interval(x);
   end_line();
+  if (format_ == 3) {
+    std::vector<double> root;
+    for (const auto& x : domain) root.insert(root.end(), {x.lo_down(), x.hi_up()});
+    compact_ = std::make_unique<CompactTree>(root, command_, p_);
+  }
   line("factors " + std::to_string(p_));
   for (const auto& f : factors) line("factor " + f.kind);
   line("tree");
@@ -142,6 +148,17 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
   while ((len = getline(&buf, &cap, in)) > 0) {
     if (buf[0] == '@') {
       splice(*tasks_.at(std::stol(buf + 1)));
+      continue;
+    }
+    if (compact_) {
+      std::string text(buf, size_t(len - 1));  // without its newline
+      if ((buf[0] == 'U' || buf[0] == 'S' || buf[0] == 'N') && buf[1] == ' ')
+        text = std::string(1, buf[0]) + " " + std::to_string(leaves_++) +
+               std::strchr(buf + 2, ' ');
+      if (text.back() == '\n') text.pop_back();
+      record_.clear();
+      compact_->record(text, record_);
+      binary(record_);
       continue;
     }
     if ((buf[0] == 'U' || buf[0] == 'S' || buf[0] == 'N') && buf[1] == ' ') {
@@ -235,31 +252,8 @@ void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
   line("end-tree " + std::to_string(leaves_));
   const int nv = int(model.vars.size());
   line("links " + std::to_string(r.certified_links.size()));
-  for (size_t i = 0; i < r.certified_links.size(); ++i) {
-    const NeighborPair& e = r.neighbors[r.certified_links[i]];
-    const LinkRecords& lp = r.link_proofs;
-    if (i >= lp.size()) throw std::logic_error("certificate: a certified link without its proof");
-    std::string shift;
-    for (int v = 0; v < nv; ++v) shift += "-0+"[e.shift(v) + 1];
-    put("K %d %d %s", e.a, e.b, shift.c_str());
-    const int n = lp.n();
-    for (int j = 0; j < n; ++j) real(lp.witness(i)[j]);
-    for (int j = 0; j < n; ++j) {
-      real(lp.inflated_lo(i, j));
-      real(lp.inflated_hi(i, j));
-    }
-    for (int k = 0; k < n * n; ++k) real(lp.C(i)[k]);
-    end_line();
-  }
-  line("csncs " + std::to_string(r.csnc_sizes.size()));
-  std::vector<std::vector<int32_t>> members(r.csnc_sizes.size());
-  for (int b = 0; b < r.boxes.size(); ++b)
-    if (r.csnc[b] >= 0) members[r.csnc[b]].push_back(b);
-  for (size_t k = 0; k < members.size(); ++k) {
-    put("csnc %zu %zu", k, members[k].size());
-    for (int32_t b : members[k]) put(" %d", b);
-    end_line();
-  }
+  links(model, r);
+  csncs(r);
   line("cuspidal " + std::to_string(r.cuspidal.pose.size()));
   for (const PoseWitness& w : r.cuspidal.pose) {
     std::string shift;
@@ -283,6 +277,79 @@ void CertificateWriter::finish(const Model& model, const AspectsResult& r) {
   line("claim lower-bound " + std::to_string(r.separation.lower_bound));
   line("end " + std::to_string(lines_));
   close();
+}
+
+void CertificateWriter::binary(const std::string& record) {
+  std::fwrite(record.data(), 1, record.size(), f_);
+  bytes_ += long(record.size());
+  ++lines_;
+}
+
+// Format 2 links as text; format 3 links: A as a step from the previous A, B − A − 1, the shift two bits a
+// variable, the witness on the grid of A's pose, Q~ on the grid of A's commands.
+void CertificateWriter::links(const Model& model, const AspectsResult& r) {
+  const int nv = int(model.vars.size()), n = model.n();
+  const LinkRecords& lp = r.link_proofs;
+  for (size_t i = 0; format_ == 2 && i < r.certified_links.size(); ++i) {
+    const NeighborPair& e = r.neighbors[r.certified_links[i]];
+    if (i >= lp.size()) throw std::logic_error("certificate: a certified link without its proof");
+    std::string shift;
+    for (int v = 0; v < nv; ++v) shift += "-0+"[e.shift(v) + 1];
+    put("K %d %d %s", e.a, e.b, shift.c_str());
+    for (int j = 0; j < n; ++j) real(lp.witness(i)[j]);
+    for (int j = 0; j < n; ++j) {
+      real(lp.inflated_lo(i, j));
+      real(lp.inflated_hi(i, j));
+    }
+    for (int k = 0; k < n * n; ++k) real(lp.C(i)[k]);
+    end_line();
+  }
+  if (format_ == 2) return;
+  int32_t last_a = 0;
+  for (size_t i = 0; i < r.certified_links.size(); ++i) {
+    const NeighborPair& e = r.neighbors[r.certified_links[i]];
+    if (i >= lp.size()) throw std::logic_error("certificate: a certified link without its proof");
+    record_.assign(1, char(0xC4));
+    compact::varint(record_, uint64_t(e.a - last_a));
+    compact::varint(record_, uint64_t(e.b - e.a - 1));
+    last_a = e.a;
+    std::string shift;
+    for (int v = 0; v < nv; ++v) shift += "0+-"[e.shift(v) == 1 ? 1 : e.shift(v) == -1 ? 2 : 0];
+    compact::signs(record_, shift.c_str(), nv);
+    const auto box_end = [&](int v, bool hi) { return hi ? r.boxes.hi(e.a, v) : r.boxes.lo(e.a, v); };
+    for (int j = 0; j < n; ++j) {
+      const int v = model.pose[j];
+      compact::end(record_, lp.witness(i)[j], box_end(v, false), box_end(v, true), box_end(v, false));
+    }
+    for (int j = 0; j < n; ++j) {
+      const int v = model.command[j];
+      const double a = box_end(v, false), b = box_end(v, true);
+      compact::end(record_, lp.inflated_lo(i, j), a, b, a);
+      compact::end(record_, lp.inflated_hi(i, j), a, b, b);
+    }
+    binary(record_);
+  }
+}
+
+void CertificateWriter::csncs(const AspectsResult& r) {
+  line("csncs " + std::to_string(r.csnc_sizes.size()));
+  std::vector<std::vector<int32_t>> members(r.csnc_sizes.size());
+  for (int b = 0; b < r.boxes.size(); ++b)
+    if (r.csnc[b] >= 0) members[r.csnc[b]].push_back(b);
+  for (size_t k = 0; k < members.size(); ++k) {
+    if (format_ == 3) {  // K, SIZE, then each id as a step beyond the one before
+      record_.assign(1, char(0xC5));
+      compact::varint(record_, k);
+      compact::varint(record_, members[k].size());
+      int64_t last = -1;
+      for (int32_t b : members[k]) compact::varint(record_, uint64_t(b - last - 1)), last = b;
+      binary(record_);
+      continue;
+    }
+    put("csnc %zu %zu", k, members[k].size());
+    for (int32_t b : members[k]) put(" %d", b);
+    end_line();
+  }
 }
 
 // Ends the compressed frame (if any), then syncs and renames the file into place.

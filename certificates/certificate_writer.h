@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "certificate_sink.h"
+#include "compact_records.h"
 #include "generalized_aspects.h"
 #include "io/atomic_file.h"
 
@@ -47,9 +48,10 @@ class TreeRecordFile : public TreeSink {
 
 class CertificateWriter : public CertificateSink {
  public:
-  // compress: the file is one zstd frame (certificates/compressed_output.h).
+  // compress: the file is one zstd frame (certificates/compressed_output.h). format: 2
+  // (text) or 3 (the bulky records in binary, certificates/compact_records.h).
   CertificateWriter(const std::string& path, const Model& model, long precision, double tau,
-                    double eps, bool compress = false);
+                    double eps, bool compress = false, int format = 2);
   ~CertificateWriter() override;
   CertificateWriter(const CertificateWriter&) = delete;
   CertificateWriter& operator=(const CertificateWriter&) = delete;
@@ -75,6 +77,9 @@ class CertificateWriter : public CertificateSink {
   void interval(const Interval& x);
   void end_line();
   void splice(TreeRecordFile& stream);
+  void binary(const std::string& record);  // one format 3 record
+  void links(const Model& model, const AspectsResult& r);
+  void csncs(const AspectsResult& r);
   void close();
 
   AtomicFile file_;
@@ -84,6 +89,10 @@ class CertificateWriter : public CertificateSink {
   int p_ = 0, n_ = 0;
   long lines_ = 0, leaves_ = 0, bytes_ = 0;
   bool compressed_ = false;
+  int format_ = 2;
+  std::vector<int> command_;
+  std::unique_ptr<CompactTree> compact_;  // format 3: the tree's coder
+  std::string record_;                    // scratch: one binary record
 };
 
 }  // namespace aspects

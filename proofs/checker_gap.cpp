@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "certificate_grid.h"
 #include "checker_margins.h"
 
 namespace aspects {
@@ -17,6 +18,11 @@ Refutation CheckerGapContractor::contract(Box& box) {
     double gap_hi = margins::contraction_gap(chi - clo, hi);
     lo = lo - gap_lo <= clo ? clo : std::nextafter(lo - gap_lo, -INFINITY);
     hi = hi + gap_hi >= chi ? chi : std::nextafter(hi + gap_hi, INFINITY);
+    if (grid_) {
+      const double u = grid::step(clo, chi);
+      lo = std::max(clo, grid::snap(lo, clo, u, false));
+      hi = std::min(chi, grid::snap(hi, chi, u, true));
+    }
     // Below 53 bits the interval rounds these outward to the working precision: what it
     // holds is what the certificate records.
     box[v].set_hull(lo, hi);

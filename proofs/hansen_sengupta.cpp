@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "certificate_grid.h"
 #include "numerics/interval_ops.h"
 #include "preconditioner.h"
 
@@ -99,7 +100,8 @@ bool pose_spreads(const HsWorkspace& ws, const std::vector<Interval>& q) {
 }  // namespace
 
 Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
-                          ExistenceProof& proof, HsWorkspace& ws, bool in_pose) {
+                          ExistenceProof& proof, HsWorkspace& ws, bool in_pose,
+                          const Box* grid) {
   const Model& m = ev.model();
   const int n = m.n();
   const std::vector<int>& u = in_pose ? m.pose : m.command;
@@ -117,6 +119,12 @@ Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int ma
       double nlo = mid - tau * (mid - lo), nhi = mid + tau * (hi - mid);
       nlo = std::nextafter(std::min(nlo, lo), -INFINITY);
       nhi = std::nextafter(std::max(nhi, hi), INFINITY);
+      if (grid) {
+        const double a = (*grid)[u[j]].lo_down(), b = (*grid)[u[j]].hi_up();
+        const double step = grid::step(a, b);
+        nlo = grid::snap(nlo, a, step, false);
+        nhi = grid::snap(nhi, b, step, true);
+      }
       q.set_hull(nlo, nhi);
       proof.inflated[j] = q;
     }

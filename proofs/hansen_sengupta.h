@@ -63,8 +63,11 @@ enum class Existence {
 
 // Iteration (9) from the command part of `box`. On Existence::Proved, `proof` records the
 // iterate, its image and the preconditioner. `in_pose`: in x, as for hansen_sengupta.
+// With `grid`, each inflated end moves on out to the grid (proofs/certificate_grid.h) of
+// that unknown's interval in *grid, the reference a format 3 certificate codes it against.
 Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
-                          ExistenceProof& proof, HsWorkspace& ws, bool in_pose = false);
+                          ExistenceProof& proof, HsWorkspace& ws, bool in_pose = false,
+                          const Box* grid = nullptr);
 
 // Rounds both ends outward to doubles (a superset; identity at 53 bits).
 void round_out_to_doubles(Interval& x);

@@ -1,5 +1,7 @@
 #include "link.h"
 
+#include "certificate_grid.h"
+
 namespace aspects {
 
 bool inner_intersection(double alo, double ahi, double blo, double bhi, int k, double& lo,
@@ -20,11 +22,24 @@ bool inner_intersection(double alo, double ahi, double blo, double bhi, int k, d
   return lo <= hi;
 }
 
+namespace {
+// A point of the grid of box A's interval `a` near x inside `in`; x when there is none.
+double on_grid(double x, const Interval& in, const Interval& a) {
+  const double r = a.lo_down(), u = grid::step(r, a.hi_up());
+  for (bool up : {false, true}) {
+    const double g = grid::snap(x, r, u, up);
+    if (g >= in.lo_down() && g <= in.hi_up()) return g;
+  }
+  return x;
+}
+}  // namespace
+
 bool certify_link(ModelEvaluator& ev, const BoxStore& R, const NeighborPair& pair, double tau,
-                  LinkProof& proof, HsWorkspace& ws) {
+                  LinkProof& proof, HsWorkspace& ws, bool grid) {
   const Model& m = ev.model();
   const int n = m.n();
-  Box w(R.nv());
+  Box w(R.nv()), a(R.nv());
+  for (int v = 0; v < R.nv(); ++v) a[v].set_hull(R.lo(pair.a, v), R.hi(pair.a, v));
   proof.witness.assign(n, 0.0);
   proof.common.resize(n);
   for (int v = 0; v < R.nv(); ++v) {
@@ -37,11 +52,14 @@ bool certify_link(ModelEvaluator& ev, const BoxStore& R, const NeighborPair& pai
   for (int j = 0; j < n; ++j) {
     int v = m.pose[j];
     double x = w[v].mid();  // a double inside the inner intersection
+    if (grid) x = on_grid(x, w[v], a[v]);
     proof.witness[j] = x;
     w[v].set_point(x);
     proof.common[j] = w[m.command[j]];
   }
-  if (prove_existence(ev, w, tau, 12, proof.existence, ws) != Existence::Proved) return false;
+  const Box* ref = grid ? &a : nullptr;
+  if (prove_existence(ev, w, tau, 12, proof.existence, ws, false, ref) != Existence::Proved)
+    return false;
   for (int j = 0; j < n; ++j)
     if (!proof.common[j].contains(proof.existence.image[j])) return false;
   return true;

@@ -66,7 +66,9 @@ class LinkRecords {
   mutable size_t cache_first_ = 0;
 };
 
+// With `grid`, the witness and Q~ are chosen on the grids of box A that format 3 codes
+// them against (proofs/certificate_grid.h), where the intersection allows.
 bool certify_link(ModelEvaluator& ev, const BoxStore& R, const NeighborPair& pair, double tau,
-                  LinkProof& proof, HsWorkspace& ws);
+                  LinkProof& proof, HsWorkspace& ws, bool grid = false);
 
 }  // namespace aspects

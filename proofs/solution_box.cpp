@@ -2,15 +2,26 @@
 
 #include <algorithm>
 
+#include "certificate_grid.h"
 #include "checker_margins.h"
 #include "strong_regularity.h"
 
 namespace aspects {
 
 SolutionBoxProver::SolutionBoxProver(ModelEvaluator& ev, ConstraintChecker& constraints,
-                                     double tau, int max_iterations)
+                                     double tau, int max_iterations, bool grid)
     : ev_(ev), constraints_(constraints), m_(ev.model()), tau_(tau),
-      max_iterations_(max_iterations) {}
+      max_iterations_(max_iterations), grid_(grid) {}
+
+// IMAGE moved out to the grid of Q~ (format 3 codes it against Q~), unless that leaves
+// the domain: then it stays as it is, and is recorded in full.
+void SolutionBoxProver::on_grid(double& lo, double& hi, const Interval& q,
+                                const Variable& var) const {
+  const double a = q.lo_down(), b = q.hi_up(), u = grid::step(a, b);
+  const double glo = grid::snap(lo, a, u, false), ghi = grid::snap(hi, b, u, true);
+  const bool in_domain = var.periodic || (glo >= var.inner_lo && ghi <= var.inner_hi);
+  if (glo >= a && ghi <= b && in_domain) lo = glo, hi = ghi;
+}
 
 bool SolutionBoxProver::covers_cell(const ExistenceProof& ex, const Box& cell) const {
   for (int j = 0; j < m_.n(); ++j)
@@ -21,7 +32,8 @@ bool SolutionBoxProver::covers_cell(const ExistenceProof& ex, const Box& cell) c
 Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& proof) {
   const int n = m_.n();
   ExistenceProof& ex = proof.existence;
-  Existence e = prove_existence(ev_, cell, tau_, max_iterations_, ex, ws_);
+  const Box* grid = grid_ ? &cell : nullptr;  // Q~ is coded against the cell
+  Existence e = prove_existence(ev_, cell, tau_, max_iterations_, ex, ws_, false, grid);
   if (e == Existence::PoseSpread) return Verdict::WidePose;
   if (e != Existence::Proved) return Verdict::NoExistence;
   // Coverage: when the iterate shrank below the cell, try once more from the hull of
@@ -32,7 +44,7 @@ Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& 
       int v = m_.command[j];
       mpfi_union(retry_[v].get(), cell[v].get(), ex.inflated[j].get());
     }
-    if (prove_existence(ev_, retry_, tau_, 2, ex, ws_) != Existence::Proved)
+    if (prove_existence(ev_, retry_, tau_, 2, ex, ws_, false, grid) != Existence::Proved)
       return Verdict::NoExistence;
     if (!covers_cell(ex, cell)) return Verdict::NotCovering;
   }
@@ -67,16 +79,17 @@ Verdict SolutionBoxProver::prove(const Box& cell, Box& reported, SolutionProof& 
       lo = std::max(lo, m_.vars[v].inner_lo);
       hi = std::min(hi, m_.vars[v].inner_hi);
     }
+    if (grid_) on_grid(lo, hi, q, m_.vars[v]);
     ex.image[j].set_hull(lo, hi);
     round_out_to_doubles(ex.image[j]);
     reported[v] = ex.image[j];
   }
   // P2 on the reported box, not on the cell: the iterate may have moved.
   if (ev_.jacobian_x(reported, J_) != EvalStatus::Defined ||
-      !strongly_regular(J_, &proof.cx, &proof.dx))
+      !strongly_regular(J_, &proof.cx, &proof.dx, grid_))
     return Verdict::SingularFx;
   if (ev_.jacobian_q(reported, J_) != EvalStatus::Defined ||
-      !strongly_regular(J_, &proof.cq, &proof.dq))
+      !strongly_regular(J_, &proof.cq, &proof.dq, grid_))
     return Verdict::SingularFq;
   if (constraints_.evaluate(reported) != Truth::True) return Verdict::ConstraintBoundary;
   return Verdict::Solution;

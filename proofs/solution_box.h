@@ -41,18 +41,21 @@ class BoxProver {
 
 class SolutionBoxProver : public BoxProver {
  public:
+  // grid: Q~ and IMAGE on the grids format 3 codes them against (proofs/certificate_grid.h).
   SolutionBoxProver(ModelEvaluator& ev, ConstraintChecker& constraints, double tau,
-                    int max_iterations);
+                    int max_iterations, bool grid = false);
   Verdict prove(const Box& cell, Box& reported, SolutionProof& proof) override;
 
  private:
   bool covers_cell(const ExistenceProof& ex, const Box& cell) const;
+  void on_grid(double& lo, double& hi, const Interval& q, const Variable& var) const;
 
   ModelEvaluator& ev_;
   ConstraintChecker& constraints_;
   const Model& m_;
   double tau_;
   int max_iterations_;
+  bool grid_;
   Box retry_;
   HsWorkspace ws_;
   IMatrix J_;

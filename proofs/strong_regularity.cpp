@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "certificate_grid.h"
 #include "preconditioner.h"
 
 namespace aspects {
@@ -45,7 +46,7 @@ bool dominant(const IMatrix& M, const std::vector<double>& D) {
 
 // D = (I − G)^-1·1, G_ij = mag(M_ij) / mig(M_ii) off the diagonal (a choice in double:
 // dominant() verifies it). Then (I − G)·D = 1 > 0, i.e. G·D < D: the scaled rows dominate.
-bool column_weights(const IMatrix& M, std::vector<double>& D) {
+bool column_weights(const IMatrix& M, std::vector<double>& D, bool grid) {
   const int n = M.rows();
   Eigen::MatrixXd G = Eigen::MatrixXd::Identity(n, n);
   for (int i = 0; i < n; ++i) {
@@ -63,6 +64,10 @@ bool column_weights(const IMatrix& M, std::vector<double>& D) {
   for (int j = 0; j < n; ++j) {
     if (!(w(j) > 0) || !std::isfinite(w(j))) return false;
     D[j] = w(j);
+    // Format 3 codes a weight on the grid of [1, 2] (multiples of 2^-16): any positive
+    // weight is sound, and dominant() tests the one recorded.
+    const double g = grid ? grid::snap(D[j], 1.0, grid::step(1.0, 2.0), true) : 0;
+    if (g > 0) D[j] = g;
   }
   return true;
 }
@@ -75,11 +80,12 @@ bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A,
   return precondition(C, A, M) && dominant(M, D);
 }
 
-bool strongly_regular(const IMatrix& A, std::vector<double>* C_out, std::vector<double>* D_out) {
+bool strongly_regular(const IMatrix& A, std::vector<double>* C_out, std::vector<double>* D_out,
+                      bool grid) {
   std::vector<double> C, D(size_t(A.rows()), 1.0);
   thread_local IMatrix M;  // scratch: no MPFI allocation per test
   bool ok = approximate_inverse(A, C) && precondition(C, A, M) &&
-            (dominant(M, D) || (column_weights(M, D) && dominant(M, D)));
+            (dominant(M, D) || (column_weights(M, D, grid) && dominant(M, D)));
   if (C_out) *C_out = std::move(C);
   if (D_out) *D_out = std::move(D);
   return ok;

@@ -22,7 +22,8 @@ bool diagonally_dominant_after(const std::vector<double>& C, const IMatrix& A,
                                const std::vector<double>& D = {});
 
 // P2 for one matrix: picks C and D, then tests. `C_out` and `D_out`, if given, receive them.
+// With `grid`, D is on the grid format 3 codes weights on (proofs/certificate_grid.h).
 bool strongly_regular(const IMatrix& A, std::vector<double>* C_out = nullptr,
-                      std::vector<double>* D_out = nullptr);
+                      std::vector<double>* D_out = nullptr, bool grid = false);
 
 }  // namespace aspects

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 namespace cc {
 
@@ -48,6 +49,22 @@ LineReader::~LineReader() {
 }
 
 LineReader& LineReader::next() {
+  EVP_DigestUpdate(md_, bytes_read_.data(), bytes_read_.size());  // a binary record's
+  bytes_read_.clear();
+  binary_ = false;
+  if (allow_binary_) {
+    const int c = std::getc(f_);
+    if (c >= 0x80) {
+      ++line_;
+      bytes_read_ += char(c);
+      decode(c);
+      bytes_ += bytes_read_.size();
+      pos_ = 0;
+      binary_ = true;
+      return *this;
+    }
+    if (c != EOF) std::ungetc(c, f_);
+  }
   ssize_t n = getline(&line_buf_, &line_cap_, f_);
   ++line_;
   if (std::ferror(f_))  // also after a partial line
@@ -101,7 +118,11 @@ void LineReader::expect_eof() {
   if (std::ferror(f_)) malformed(line_ + 1, kUnreadable);
 }
 
-std::string LineReader::file_sha256() { return hex_digest(md_); }
+std::string LineReader::file_sha256() {
+  EVP_DigestUpdate(md_, bytes_read_.data(), bytes_read_.size());
+  bytes_read_.clear();
+  return hex_digest(md_);
+}
 
 // At most 18 digits, so that the value fits an int64_t without overflow checks.
 int64_t parse_int(std::string_view s, long rec) {
@@ -163,7 +184,7 @@ LineReader& LineReader::expect(const std::vector<const char*>& words, size_t ext
 }
 
 LineReader& LineReader::require(const std::vector<const char*>& words, size_t extra) {
-  bool ok = fields_.size() == words.size() + extra;
+  bool ok = !binary_ && fields_.size() == words.size() + extra;
   for (size_t i = 0; ok && i < words.size(); ++i) ok = fields_[i] == words[i];
   if (!ok) {
     std::string want;
@@ -177,17 +198,152 @@ LineReader& LineReader::require(const std::vector<const char*>& words, size_t ex
 }
 
 void LineReader::count(size_t k) {
-  if (size() != k) malformed(line_, std::string(kind()) + " record: wrong number of fields");
+  if (!binary_ && size() != k) malformed(line_, std::string(kind()) + " record: wrong number of fields");
 }
 
 std::string_view LineReader::word() {
+  if (binary_) {
+    const Field& f = field(Field::Word);
+    return std::string_view(words_).substr(f.off, f.len);
+  }
   if (pos_ >= size()) malformed(line_, std::string(kind()) + " record: too few fields");
   return fields_[pos_++];
 }
 
-int64_t LineReader::integer() { return parse_int(word(), line_); }
+int64_t LineReader::integer() { return binary_ ? field(Field::Int).z : parse_int(word(), line_); }
 
-double LineReader::real() { return parse_real(word(), line_); }
+double LineReader::real() { return parse_real(word(), line_); }  // binary records have none
+
+// ---- Format 3's binary records (FORMAT.md, "Format 3").
+
+void LineReader::allow_binary(int n, int nv, int p) {
+  allow_binary_ = true;
+  n_ = n;
+  nv_ = nv;
+  p_ = p;
+}
+
+// The next field of the binary record read last, which the rules read in the order of its
+// type's fields; the type is the format's, so a mismatch is the checker's own error.
+const LineReader::Field& LineReader::field(Field::Type t) {
+  if (pos_ >= bin_.size() || bin_[pos_].type != t)
+    throw std::logic_error("check_cert: binary fields read out of order");
+  return bin_[pos_++];
+}
+
+double LineReader::end(double a, double b, bool upper, int64_t offset) {
+  if (!binary_) return real();
+  const Field& f = field(Field::Code);
+  if (f.raw) return f.x;
+  const double x = std::fma(double(f.z + offset), std::ldexp(b - a, -16), upper ? b : a);
+  if (!std::isfinite(x)) malformed(line_, "a coded end is not finite");
+  return x;
+}
+
+int LineReader::byte() {
+  const int c = std::getc(f_);
+  if (c == EOF) malformed(line_, std::ferror(f_) ? kUnreadable : "unexpected end of file");
+  bytes_read_ += char(c);
+  return c;
+}
+
+// An unsigned LEB128 integer below 2^53, in at most 8 bytes (sums of two stay exact).
+uint64_t LineReader::varint() {
+  uint64_t x = 0;
+  for (int shift = 0; shift < 56; shift += 7) {
+    const int c = byte();
+    x |= uint64_t(c & 0x7f) << shift;
+    if (!(c & 0x80)) {
+      if (x >= (uint64_t(1) << 53)) break;
+      return x;
+    }
+  }
+  malformed(line_, "binary integer out of range");
+}
+
+void LineReader::add(Field::Type t, int64_t i) {
+  Field f{t};
+  f.z = i;
+  bin_.push_back(f);
+}
+
+void LineReader::word(std::string w) {
+  Field f{Field::Word};
+  f.off = uint32_t(words_.size());
+  f.len = uint32_t(w.size());
+  words_ += w;
+  bin_.push_back(f);
+}
+
+// A coded end: 0 then 8 bytes (the double, little-endian), or 1 + the zigzag code of z.
+void LineReader::code() {
+  Field f{Field::Code};
+  const uint64_t c = varint();
+  if (c == 0) {
+    uint64_t bits = 0;
+    for (int i = 0; i < 8; ++i) bits |= uint64_t(byte()) << (8 * i);
+    f.raw = true;
+    std::memcpy(&f.x, &bits, sizeof f.x);
+    if (!std::isfinite(f.x)) malformed(line_, "a binary real is not finite");
+  } else {
+    f.z = (c - 1) & 1 ? -int64_t((c - 1) >> 1) - 1 : int64_t((c - 1) >> 1);
+  }
+  bin_.push_back(f);
+}
+
+void LineReader::decode(int tag) {
+  bin_.clear();
+  words_.clear();
+  // A sum of steps (ids, link ends) stays far from int64's end: a larger one names no box.
+  const auto step = [&](int64_t& sum, uint64_t by) {
+    sum += int64_t(by);
+    if (sum >= (int64_t(1) << 53)) malformed(line_, "binary id out of range");
+    return sum;
+  };
+  // k characters of two bits each, four a byte: 0 '0', 1 '+', 2 '-' (3 and stray bits '?').
+  const auto packed = [&](int k) {
+    std::string s;
+    for (int i = 0; i < k; i += 4) {
+      int b = byte();
+      for (int j = 0; j < 4; ++j, b >>= 2)
+        if (i + j < k) s += "0+-?"[b & 3];
+      if (b) s += '?';
+    }
+    return s;
+  };
+  if (tag < 0xC0) {  // P or B, the variable in the tag (31: 31 + a varint)
+    const bool P = tag < 0xA0;
+    bin_kind_ = P ? "P" : "B";
+    const uint64_t v = uint64_t(tag & 0x1f);
+    add(Field::Int, int64_t(v == 31 ? 31 + varint() : v));
+    code();
+    if (P) code();
+    return;
+  }
+  static const char* const kinds[] = {"X", "U", "N", "S", "K", "csnc"};
+  if (tag > 0xC5) malformed(line_, "unknown binary record (first byte " + std::to_string(tag) + ")");
+  bin_kind_ = kinds[tag - 0xC0];
+  if (tag == 0xC0) {  // X: 0 hs, 1 + 2i eq<i>, 2 + 2k c<k>
+    const uint64_t h = varint();
+    word(h == 0 ? "hs" : h % 2 ? "eq" + std::to_string((h - 1) / 2) : "c" + std::to_string((h - 2) / 2));
+  } else if (tag <= 0xC3) {  // U, N, S: the id is the next one; the signs
+    add(Field::Int, step(last_id_, 1));
+    word(p_ == 0 ? "." : packed(p_));
+    if (tag == 0xC3)
+      for (int k = 0; k < 6 * n_; ++k) code();  // Q~, IMAGE, then DX and DQ
+  } else if (tag == 0xC4) {  // K: A as a step from the last A, B - A - 1, SHIFT, ends
+    add(Field::Int, step(last_a_, varint()));
+    int64_t b = last_a_;
+    add(Field::Int, step(b, 1 + varint()));
+    word(packed(nv_));
+    for (int k = 0; k < 3 * n_; ++k) code();  // the witness, then Q~
+  } else {  // csnc: K, SIZE, then each id as a step beyond the one before
+    add(Field::Int, int64_t(varint()));
+    const int64_t size = int64_t(varint());
+    add(Field::Int, size);
+    for (int64_t i = 0, id = -1; i < size; ++i) add(Field::Int, step(id, 1 + varint()));
+  }
+}
 
 std::vector<double> LineReader::reals(size_t k) {
   std::vector<double> out(k);

@@ -25,9 +25,9 @@ void Checker::header() {
   if (rd.size() != 2 || rd.kind() != "aspects-certificate")
     malformed(rec(), "not an aspects certificate");
   const std::string_view v = rd.word();
-  if (v != "1" && v != "2")
+  if (v != "1" && v != "2" && v != "3")
     malformed(rec(), "unknown certificate version '" + std::string(v) + "'");
-  version = v == "1" ? 1 : 2;
+  version = v[0] - '0';
   rd.expect({"tool", "aspects"}, 1);  // the writer's version: free text (FORMAT.md)
   read_model();
   read_domain();
@@ -35,6 +35,7 @@ void Checker::header() {
   if (count < 0 || count > 20) reject("number of factors out of range 0..20");
   p = int(count);
   for (int i = 0; i < p; ++i) factors.push_back(read_factor());
+  if (version == 3) rd.allow_binary(n, nv, p);
   rd.expect({"tree"}, 0);
   R.nv = nv;
 }

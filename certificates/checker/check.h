@@ -38,7 +38,7 @@ struct Checker {
   std::unique_ptr<Prover> prover;  // the proofs in line (--trusted-only): on `ev`
   int threads = 1;
   int n = 0, nv = 0, p = 0;    // equations, variables, factors
-  int version = 0;             // 1: P2 without column weights (D = 1); 2: with DX, DQ
+  int version = 0;  // 1: P2 without column weights (D = 1); 2: with DX, DQ; 3: binary records
   std::vector<Ival> dlo, dhi;  // enclosures of the declared bounds
   std::vector<bool> periodic;
   std::vector<Factor> factors;
@@ -62,6 +62,16 @@ struct Checker {
   Checker(FILE* f, Verdict& v) : rd(f), out(v) {}
   long rec() const { return rd.record(); }
   [[noreturn]] void reject(const std::string& why) { rejected(rec(), why); }
+  // k intervals: in a binary record each end coded against the same end of `ref`'s
+  // interval (FORMAT.md, "Format 3"); in a text record, as written.
+  Box intervals(const double* ref, size_t k) {
+    if (!rd.binary()) return rd.intervals(k);
+    Box out(2 * k);
+    for (size_t j = 0; j < 2 * k; ++j) out[j] = rd.end(ref[j & ~size_t(1)], ref[j | 1], j & 1);
+    for (size_t j = 0; j < k; ++j)
+      if (!(out[2 * j] <= out[2 * j + 1])) malformed(rec(), "interval with LO > HI");
+    return out;
+  }
   // The next field: an index in 0..limit-1.
   long index(size_t limit) {
     const int64_t v = rd.integer();

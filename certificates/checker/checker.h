@@ -33,7 +33,8 @@ namespace cc {
 
 // ---- The lexical layer (cert_reader.cpp, FORMAT.md "Lexical rules"): one record per line,
 // single-space separated fields, canonical decimal integers and canonical `%a` hexadecimal
-// reals. The reader hashes every byte it consumes (SHA-256 of the whole file) and numbers
+// reals; in format 3 also binary records (a first byte >= 0x80, FORMAT.md "Format 3"),
+// decoded into the same fields, each end still coded against its reference interval. The reader hashes every byte it consumes (SHA-256 of the whole file) and numbers
 // lines for error messages. Anything that does not follow the rules is a Malformed error
 // (exit 2); failed verifications are Rejected errors (exit 1), thrown by the other modules
 // with the record they concern.
@@ -66,9 +67,9 @@ class LineReader {
   LineReader& expect(const std::vector<const char*>& words, size_t extra);
   // The same test on the record read last.
   LineReader& require(const std::vector<const char*>& words, size_t extra);
-  void count(size_t k);  // the record read last has k fields
-  std::string_view kind() const { return fields_[0]; }
-  size_t size() const { return fields_.size(); }
+  void count(size_t k);  // the record read last has k fields (binary ones always do)
+  std::string_view kind() const { return binary_ ? bin_kind_ : fields_[0]; }
+  size_t size() const { return binary_ ? bin_.size() + 1 : fields_.size(); }
   // The fields of the record read last, left to right after its leading words.
   std::string_view word();
   int64_t integer();
@@ -76,6 +77,12 @@ class LineReader {
   std::vector<double> reals(size_t k);
   // k intervals LO HI (2k reals, all parsed before any LO <= HI is checked).
   std::vector<double> intervals(size_t k);
+  // An end coded against [a, b] (format 3: fma(z, u, a or, if `upper`, b), u = (b − a)·2^-16,
+  // z the code plus `offset`, or 8 bytes); in a text record, the next real.
+  double end(double a, double b, bool upper, int64_t offset = 0);
+  // Format 3: binary records may follow, their fields sized by n, nv and p.
+  void allow_binary(int n, int nv, int p);
+  bool binary() const { return binary_; }  // the record read last is binary
   // Reads exactly `n` raw bytes (the embedded model text) and counts its lines.
   std::string raw(size_t n);
   void expect_eof();                         // nothing may follow the last record
@@ -92,6 +99,28 @@ class LineReader {
   uint64_t bytes_ = 0;
   std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
   size_t pos_ = 0;                        // the next field word() returns
+  // Binary records (cert_reader.cpp): the decoded fields, each an integer, a word or a
+  // coded end (raw: x is the end; else z is its code).
+  struct Field {
+    enum Type : uint8_t { Int, Word, Code } type;
+    bool raw = false;
+    int64_t z = 0;
+    double x = 0;
+    uint32_t off = 0, len = 0;  // a word: words_[off, off + len)
+  };
+  bool allow_binary_ = false, binary_ = false;
+  std::string_view bin_kind_;
+  int n_ = 0, nv_ = 0, p_ = 0;
+  std::vector<Field> bin_;
+  std::string words_, bytes_read_;  // the words of bin_; the record's bytes (for the hash)
+  int64_t last_id_ = -1, last_a_ = 0;  // ids and link A are coded as steps
+  int byte();
+  uint64_t varint();
+  void decode(int tag);
+  void add(Field::Type t, int64_t i = 0);
+  void code();
+  void word(std::string w);
+  const Field& field(Field::Type t);
 };
 
 // ---- The whole check (check.cpp): reads a certificate from f (closed on return) and says
@@ -301,12 +330,12 @@ class Prover {
   std::vector<Ival> box;          // nv intervals: the box the next call works on
 
   // P1/P3: y = q̌ − GS(C·Fq(x, Q), C·f(x, q̌)), x the pose part of `box`, Q the inflated box
-  // (n lo/hi pairs), C row major. Returns nullptr on success, else why it failed. With
+  // (n lo/hi pairs), C row major (nullptr: the checker's own, the inverse of mid Fq). Returns nullptr on success, else why it failed. With
   // `pose` the roles swap (V records): x unknown in Q, Fx for Fq, the commands of `box` fixed.
   const char* newton(const double* Q, const double* C, bool pose = false);
   std::vector<Ival> y;
   // P2 on `box`: C_X·Fx·diag(D_X) and C_Q·Fq·diag(D_Q) strictly diagonally dominant
-  // (D positive). Keeps the Jacobians.
+  // (D positive; a null C: the checker's own). Keeps the Jacobians.
   const char* regular(const double* CX, const double* CQ, const double* DX, const double* DQ);
   // Enclosure of a factor on `box`; false if not defined there. `jac` says whether the
   // Jacobians of `box` are already computed (by regular()).
@@ -317,6 +346,7 @@ class Prover {
 
  private:
   bool jacobians();
+  const double* own_preconditioner(const std::vector<Ival>& J);
   bool dominant(const std::vector<Ival>& J, const double* C, const double* D);
   bool contract(std::vector<Ival>& b);
   int hs_contract(std::vector<Ival>& b);
@@ -334,7 +364,7 @@ class Prover {
   std::vector<Ival> w_, Jx_, Jq_, A_, b_;
   // Scratch of one call at a time, kept to spare the allocations of millions of calls.
   std::vector<Ival> X_, c_, rb_;  // newton() and hs_contract(); refute()
-  std::vector<double> M_, C_, w1_, w2_;  // hs_contract(); contract()
+  std::vector<double> M_, own_, w1_, w2_;  // own_preconditioner(); contract()
   Ival t1_, t2_;
 };
 

@@ -143,6 +143,7 @@ const char* Prover::newton(const double* Q, const double* C, bool pose) {
   if (!ev_.eval_ad(ev_.all_eqs, w_.data(), pose ? pose_mask_ : cmd_mask_))
     return "the Jacobian is not defined on the Newton box";
   read_jacobian(u, Jq_);  // Fx in Jq_ when `pose`
+  if (!C && !(C = own_preconditioner(Jq_))) return "the midpoint of the Jacobian is singular";
   product(Jq_, C, A_);
   // q̌: the binary64 midpoint of Q~, clamped into it (any point of Q~ is sound).
   for (int j = 0; j < n_; ++j) {
@@ -197,7 +198,9 @@ bool Prover::dominant(const std::vector<Ival>& J, const double* C, const double*
 const char* Prover::regular(const double* CX, const double* CQ, const double* DX,
                             const double* DQ) {
   if (!jacobians()) return "Jacobian not defined on the box";
+  if (!CX && !(CX = own_preconditioner(Jx_))) return "the midpoint of Fx is singular";
   if (!dominant(Jx_, CX, DX)) return "C_X*Fx*D_X is not strictly diagonally dominant";
+  if (!CQ && !(CQ = own_preconditioner(Jq_))) return "the midpoint of Fq is singular";
   if (!dominant(Jq_, CQ, DQ)) return "C_Q*Fq*D_Q is not strictly diagonally dominant";
   return nullptr;
 }
@@ -215,17 +218,22 @@ bool Prover::factor(const Factor& f, bool jac, Ival& out) {
   return out.bounded();
 }
 
+// The checker's own preconditioner for J (format 3 records none): the approximate inverse
+// of its midpoint, in own_; nullptr when that is singular.
+const double* Prover::own_preconditioner(const std::vector<Ival>& J) {
+  M_.resize(size_t(n_) * n_);
+  for (size_t k = 0; k < M_.size(); ++k) M_[k] = 0.5 * (J[k].lo() + J[k].hi());
+  return invert(M_, n_, own_) ? own_.data() : nullptr;
+}
+
 // Hansen–Sengupta contraction of the commands of b (x an interval parameter), with the
 // checker's own preconditioner. −1: no solution in b; 0: not applicable; 1: applied.
 int Prover::hs_contract(std::vector<Ival>& b) {
   if (!ev_.eval_ad(ev_.all_eqs, b.data(), cmd_mask_)) return 0;  // f must be C¹ on b
   read_jacobian(m_.command, Jq_);
-  std::vector<double>& M = M_;  // mid(Fq), then spoilt by its approximate inverse C
-  std::vector<double>& C = C_;
-  M.resize(size_t(n_) * n_);
-  for (size_t k = 0; k < M.size(); ++k) M[k] = 0.5 * (Jq_[k].lo() + Jq_[k].hi());
-  if (!invert(M, n_, C)) return 0;
-  product(Jq_, C.data(), A_);
+  const double* C = own_preconditioner(Jq_);
+  if (!C) return 0;
+  product(Jq_, C, A_);
   std::vector<Ival>& X = X_;
   std::vector<Ival>& c = c_;
   w_ = b;
@@ -235,7 +243,7 @@ int Prover::hs_contract(std::vector<Ival>& b) {
     w_[m_.command[j]] = c[j];
   }
   if (!ev_.eval(ev_.all_eqs, w_.data(), Mode::Proof)) return 0;
-  rhs(C.data());
+  rhs(C);
   for (int i = 0; i < n_; ++i) {
     if (A_[i * n_ + i].has_zero()) continue;
     gs_row(i, X, c);

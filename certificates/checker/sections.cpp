@@ -34,7 +34,8 @@ std::pair<double, double> Checker::inner(long a, long b, int v, int k) {
 
 // K: box A and box B shifted by 2πk share a solution (P3).
 void Checker::link() {
-  rd.count(4 + 3 * size_t(n) + size_t(n) * n);
+  const size_t nn = rd.binary() ? 0 : size_t(n) * n;  // binary: the checker's own C
+  rd.count(4 + 3 * size_t(n) + nn);
   const long a = index(R.size());
   const long b = index(R.size());
   if (!(a < b)) reject("link needs A < B");
@@ -42,9 +43,14 @@ void Checker::link() {
     reject("link between boxes that are not both solution boxes");
   if (std::make_pair(a, b) <= last_link) reject("links not sorted by (A, B) or repeated");
   const std::vector<int> k = shifts();
-  const std::vector<double> w = rd.reals(n);
-  const Box Q = rd.intervals(n);
-  const std::vector<double> C = rd.reals(size_t(n) * n);
+  // In a binary record the witness is coded against A's pose, Q~ against A's commands.
+  const double* A = R.box(a);
+  std::vector<double> w(n);
+  for (int j = 0; j < n; ++j) w[j] = rd.end(A[2 * m.pose[j]], A[2 * m.pose[j] + 1], false);
+  Box a_commands(2 * n);
+  for (int j = 0; j < n; ++j) put(a_commands, j, A[2 * m.command[j]], A[2 * m.command[j] + 1]);
+  const Box Q = intervals(a_commands.data(), n);
+  const std::vector<double> C = rd.reals(nn);
   Box X(2 * nv);  // the intersection, then the witness pose with its commands
   for (int v = 0; v < nv; ++v) {
     if (k[v] && !periodic[v]) reject("shift on a non-periodic variable");

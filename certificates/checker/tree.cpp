@@ -41,7 +41,7 @@ void Checker::tree() {
 void Checker::contraction(Box& cell) {
   rd.count(4);
   const long v = index(nv);
-  const Box lh = rd.intervals(1);
+  const Box lh = intervals(&cell[2 * v], 1);
   const double lo = cell[2 * v];
   const double hi = cell[2 * v + 1];
   if (!within(lo, hi, lh[0], lh[1])) reject("contraction is not inside the cell");
@@ -56,7 +56,7 @@ void Checker::contraction(Box& cell) {
 void Checker::bisection(Box& cell, std::vector<Box>& stack) {
   rd.count(3);
   const long v = index(nv);
-  const double x = rd.real();
+  const double x = rd.end(cell[2 * v], cell[2 * v + 1], false, 1 << 15);  // binary: 0 the middle
   if (!(cell[2 * v] < x && x < cell[2 * v + 1]))
     reject("bisection point not strictly inside the cell");
   stack.push_back(cell);
@@ -116,18 +116,22 @@ bool Checker::at_most_eps(const Box& cell) const {
 }
 
 void Checker::solution_leaf(const Box& cell) {
-  const size_t nn = size_t(n) * n;
+  // A binary record has no preconditioners: the prover computes its own.
+  const size_t nn = rd.binary() ? 0 : size_t(n) * n;
   const size_t weights = version == 1 ? 0 : 2 * size_t(n);
   rd.count(3 + 4 * size_t(n) + 3 * nn + weights);
   const std::string_view signs = rd.word();
-  const Box Q = rd.intervals(n);
-  const Box img = rd.intervals(n);
+  Box commands(2 * n);  // Q~ is coded against the cell's commands, IMAGE against Q~
+  for (int j = 0; j < n; ++j) put(commands, j, cell[2 * m.command[j]], cell[2 * m.command[j] + 1]);
+  const Box Q = intervals(commands.data(), n);
+  const Box img = intervals(Q.data(), n);
   const std::vector<double> C = rd.reals(nn);
   const std::vector<double> CX = rd.reals(nn);
   const std::vector<double> CQ = rd.reals(nn);
-  const std::vector<double> ones(n, 1.0);  // version 1: unscaled dominance
-  const std::vector<double> DX = version == 1 ? ones : rd.reals(n);
-  const std::vector<double> DQ = version == 1 ? ones : rd.reals(n);
+  // Version 1 has no weights (unscaled dominance); a binary record codes them on [1, 2].
+  std::vector<double> DX(n, 1.0), DQ(n, 1.0);
+  for (int j = 0; version > 1 && j < n; ++j) DX[j] = rd.end(1, 2, false);
+  for (int j = 0; version > 1 && j < n; ++j) DQ[j] = rd.end(1, 2, false);
   for (int j = 0; j < n; ++j)
     if (!(DX[j] > 0) || !(DQ[j] > 0)) reject("P2: a column weight is not positive");
   const Box B = solution_box(cell, Q, img);
@@ -140,7 +144,9 @@ void Checker::solution_leaf(const Box& cell) {
         unique_zero(pr, "P1", Q, C, img, "the Hansen-Sengupta image is not inside IMAGE");
     if (!why.empty()) return why;
     pr.load(B.data());
-    if (const char* w = pr.regular(CX.data(), CQ.data(), DX.data(), DQ.data()))
+    const double* cx = CX.empty() ? nullptr : CX.data();  // binary: the checker's own
+    const double* cq = CQ.empty() ? nullptr : CQ.data();
+    if (const char* w = pr.regular(cx, cq, DX.data(), DQ.data()))
       return std::string("P2: ") + w;
     if (pr.evaluator().feasible(pr.box.data()) != 2)
       return "inner test: a constraint is not True on the box" + show(B);
@@ -179,7 +185,8 @@ Box Checker::solution_box(const Box& cell, const Box& Q, const Box& img) {
 std::string Checker::unique_zero(Prover& pr, const std::string& claim, const Box& Q,
                         const std::vector<double>& C, const Box& target,
                         const std::string& outside, bool pose) const {
-  if (const char* why = pr.newton(Q.data(), C.data(), pose)) return claim + ": " + why;
+  const double* c = C.empty() ? nullptr : C.data();  // binary records: the checker's own
+  if (const char* why = pr.newton(Q.data(), c, pose)) return claim + ": " + why;
   for (int j = 0; j < n; ++j) {
     const Ival& y = pr.y[j];
     if (!inside(y, Q[2 * j], Q[2 * j + 1], true))

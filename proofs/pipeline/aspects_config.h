@@ -36,6 +36,10 @@ struct AspectsConfig {
   // Not with a box budget: it counts this process's boxes only.
   RemoteSubtrees* remote = nullptr;
   CertificateSink* certificate = nullptr;  // receives the tree records while solving
+  // Put recorded ends on the grids of certificate format 3 (proofs/certificate_grid.h):
+  // contractions, Q~, IMAGE and link witnesses, each moved outward or within what was
+  // proved, so the boxes differ from a run without it in the last few of 2^16 steps.
+  bool grid_records = false;
   // Limits and signals (search/stop_condition.h), asked by every phase. A stopped search
   // keeps the cells not yet searched as unexplored output boxes; a later phase that stops
   // keeps what it established (each phase says what), so every claim of the result holds.

@@ -86,7 +86,7 @@ void LinkPhase::round(size_t count) {
           rb = local.root(joined_root(pr.b));
           if (ra == rb) continue;
         }
-        if (!certify_link(ev, boxes_.ends(), pr, c_.tau, lp, ws)) continue;
+        if (!certify_link(ev, boxes_.ends(), pr, c_.tau, lp, ws, c_.grid_records)) continue;
         if (!c_.all_links) local.join(ra, rb);
         block_links[k].push_back(int32_t(e));
         if (c_.keep_link_proofs) block_proofs[k].push(lp);

@@ -1,0 +1,48 @@
+// The binary records of certificate format 3 (certificates/FORMAT.md, "Format 3"): the
+// same records as format 2, in the same order, with the bulky ones (the search tree, the
+// links and the CSNCs) coded in bytes. Each end is a small integer on the grid of an
+// interval the checker already holds (proofs/certificate_grid.h), or its 8 bytes.
+// Preconditioners are left out: the checker computes its own.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace aspects {
+
+// Low-level coding, shared by the tree and the sections.
+namespace compact {
+void varint(std::string& out, uint64_t x);
+void raw(std::string& out, double x);  // 8 bytes, little-endian binary64
+// An end x on the grid of [a, b] from r (an end of it), offset by `offset` steps; its
+// 8 bytes when it is not on it.
+void end(std::string& out, double x, double a, double b, double r, int64_t offset = 0);
+// "+-0" characters (p of them, or "."), two bits each.
+void signs(std::string& out, const char* s, int p);
+}  // namespace compact
+
+// Re-codes the tree records of format 2 text (one line each, output ids already global)
+// as format 3 records, following the cells as the checker does, from the root cell.
+class CompactTree {
+ public:
+  // root: lo/hi pairs per variable; command: the commands' variable indices.
+  CompactTree(std::vector<double> root, std::vector<int> command, int factors);
+  // Appends the coding of one record (its text without the newline) to `out`.
+  void record(const std::string& line, std::string& out);
+  // Ends coded by their 8 bytes, and all ends (the grid's coverage).
+  long raw_ends = 0, ends = 0;
+
+ private:
+  using Cell = std::vector<double>;
+  void end(std::string& out, double x, const double* ref, bool upper, int64_t offset = 0);
+  Cell& current();
+  std::vector<Cell> stack_;
+  Cell cell_;
+  bool open_ = false;  // cell_ is the node being read
+  std::vector<int> command_;
+  int p_;
+  long next_id_ = 0;
+};
+
+}  // namespace aspects
