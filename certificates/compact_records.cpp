@@ -1,5 +1,6 @@
 #include "compact_records.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -24,9 +25,11 @@ void raw(std::string& out, double x) {
   for (int i = 0; i < 8; ++i) out += char((b >> (8 * i)) & 0xff);
 }
 
-void end(std::string& out, double x, double a, double b, double r, int64_t offset) {
+void end(std::string& out, double x, double a, double b, double r, int64_t offset, int bits) {
   int64_t z;
-  if (grid::code(x, r, grid::step(a, b), z)) {
+  // The checker's step is (b − a)·2^-bits whatever step() says of it: it must be finite.
+  const bool finite = std::isfinite(std::ldexp(b - a, -bits));
+  if (finite && grid::code(x, r, grid::step(a, b, bits), z)) {
     const int64_t d = z - offset;
     varint(out, 1 + (d >= 0 ? 2 * uint64_t(d) : 2 * uint64_t(-(d + 1)) + 1));  // zigzag
   } else {
@@ -85,9 +88,10 @@ CompactTree::Cell& CompactTree::current() {
   return cell_;
 }
 
-void CompactTree::end(std::string& out, double x, const double* ref, bool upper, int64_t offset) {
+void CompactTree::end(std::string& out, double x, const double* ref, bool upper, int64_t offset,
+                      int bits) {
   const size_t before = out.size();
-  compact::end(out, x, ref[0], ref[1], ref[upper], offset);
+  compact::end(out, x, ref[0], ref[1], ref[upper], offset, bits);
   ++ends;
   raw_ends += out[before] == 0;
 }
@@ -100,8 +104,8 @@ void CompactTree::record(const std::string& line, std::string& out) {
     const long v = r.integer(1);
     const double lo = r.real(2), hi = r.real(3);
     tagged(out, 0x80, v);
-    end(out, lo, &cell[2 * v], false);
-    end(out, hi, &cell[2 * v], true);
+    end(out, lo, &cell[2 * v], false, 0, grid::kContractionBits);
+    end(out, hi, &cell[2 * v], true, 0, grid::kContractionBits);
     cell[2 * v] = lo;
     cell[2 * v + 1] = hi;
     return;

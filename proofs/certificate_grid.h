@@ -14,19 +14,24 @@
 namespace aspects::grid {
 
 constexpr int kBits = 16;
+// Contractions are coded on a coarser grid: each is weakened by at most 2^-10 of the
+// cell's width, and its ends take one or two bytes instead of two or three.
+constexpr int kContractionBits = 10;
 
 // The step of the grid of [a, b]; 0 when it has no usable grid: empty, infinite, or so
 // narrow beside its magnitude that neighbouring grid values could round to one double.
-inline double step(double a, double b) {
-  const double u = std::ldexp(b - a, -kBits);
+inline double step(double a, double b, int bits = kBits) {
+  const double u = std::ldexp(b - a, -bits);
   const bool fine = u >= 0x1p-1000 && u >= (std::fabs(a) + std::fabs(b)) * 0x1p-48;
   return std::isfinite(u) && fine ? u : 0;
 }
 
 inline double value(double r, double u, int64_t z) { return std::fma(double(z), u, r); }
 
-// The z with value(r, u, z) == x, if there is one of magnitude below 2^40.
+// The z with value(r, u, z) == x, if there is one of magnitude below 2^40. x == r is
+// z = 0 on any grid, also that of a point [a, a] (a checker computes fma(0, u, r) = r).
 inline bool code(double x, double r, double u, int64_t& z) {
+  if (x == r) return z = 0, true;
   if (u == 0 || !std::isfinite(x)) return false;
   const double q = (x - r) / u;
   if (!(std::fabs(q) < 0x1p40)) return false;

@@ -19,7 +19,7 @@ Refutation CheckerGapContractor::contract(Box& box) {
     lo = lo - gap_lo <= clo ? clo : std::nextafter(lo - gap_lo, -INFINITY);
     hi = hi + gap_hi >= chi ? chi : std::nextafter(hi + gap_hi, INFINITY);
     if (grid_) {
-      const double u = grid::step(clo, chi);
+      const double u = grid::step(clo, chi, grid::kContractionBits);
       lo = std::max(clo, grid::snap(lo, clo, u, false));
       hi = std::min(chi, grid::snap(hi, chi, u, true));
     }

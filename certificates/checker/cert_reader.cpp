@@ -231,11 +231,11 @@ const LineReader::Field& LineReader::field(Field::Type t) {
   return bin_[pos_++];
 }
 
-double LineReader::end(double a, double b, bool upper, int64_t offset) {
+double LineReader::end(double a, double b, bool upper, int64_t offset, int bits) {
   if (!binary_) return real();
   const Field& f = field(Field::Code);
   if (f.raw) return f.x;
-  const double x = std::fma(double(f.z + offset), std::ldexp(b - a, -16), upper ? b : a);
+  const double x = std::fma(double(f.z + offset), std::ldexp(b - a, -bits), upper ? b : a);
   if (!std::isfinite(x)) malformed(line_, "a coded end is not finite");
   return x;
 }

@@ -64,10 +64,11 @@ struct Checker {
   [[noreturn]] void reject(const std::string& why) { rejected(rec(), why); }
   // k intervals: in a binary record each end coded against the same end of `ref`'s
   // interval (FORMAT.md, "Format 3"); in a text record, as written.
-  Box intervals(const double* ref, size_t k) {
+  Box intervals(const double* ref, size_t k, int bits = 16) {
     if (!rd.binary()) return rd.intervals(k);
     Box out(2 * k);
-    for (size_t j = 0; j < 2 * k; ++j) out[j] = rd.end(ref[j & ~size_t(1)], ref[j | 1], j & 1);
+    for (size_t j = 0; j < 2 * k; ++j)
+      out[j] = rd.end(ref[j & ~size_t(1)], ref[j | 1], j & 1, 0, bits);
     for (size_t j = 0; j < k; ++j)
       if (!(out[2 * j] <= out[2 * j + 1])) malformed(rec(), "interval with LO > HI");
     return out;

@@ -79,7 +79,7 @@ class LineReader {
   std::vector<double> intervals(size_t k);
   // An end coded against [a, b] (format 3: fma(z, u, a or, if `upper`, b), u = (b − a)·2^-16,
   // z the code plus `offset`, or 8 bytes); in a text record, the next real.
-  double end(double a, double b, bool upper, int64_t offset = 0);
+  double end(double a, double b, bool upper, int64_t offset = 0, int bits = 16);
   // Format 3: binary records may follow, their fields sized by n, nv and p.
   void allow_binary(int n, int nv, int p);
   bool binary() const { return binary_; }  // the record read last is binary

@@ -41,7 +41,7 @@ void Checker::tree() {
 void Checker::contraction(Box& cell) {
   rd.count(4);
   const long v = index(nv);
-  const Box lh = intervals(&cell[2 * v], 1);
+  const Box lh = intervals(&cell[2 * v], 1, 10);  // binary: on the coarser grid 2^-10
   const double lo = cell[2 * v];
   const double hi = cell[2 * v + 1];
   if (!within(lo, hi, lh[0], lh[1])) reject("contraction is not inside the cell");
