@@ -11,7 +11,11 @@ median wall time and the peak RSS. A check that does not print VERIFIED stops th
 ROBOT:EPS:zst solves with --compress-cert (the certificate is then aspects.cert.zst, and
 both CPU figures include zstd: the solver's compression, the checker's decompression); for
 runs whose text certificate would not fit on the disk (3-RPR at eps 0.1 writes 53 GB).
+ROBOT:EPS:v3 (or :v3:zst) writes certificate format 3 (--cert-format 3). Each row also gives
+the output boxes and the archived bytes a box: the certificate compressed by zstd -12
+(the .zst file recompressed at -12 when the solver compressed it).
 """
+import json
 import os
 import statistics
 import subprocess
@@ -34,19 +38,28 @@ def main():
     cut = sys.argv.index("--")
     checkers, cases = sys.argv[5:cut], sys.argv[cut + 1:]
     robots = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "robots")
-    head = "| robot, eps | solve CPU s (RSS MB) |" + "".join(
+    head = "| robot, eps | boxes | CSNCs (kept) | bound | archived B/box | solve CPU s (RSS MB) |" + "".join(
         " check %d: CPU s, ratio, wall s, RSS MB |" % (i + 1) for i in range(len(checkers)))
     print(head)
-    print("|---" * (2 + len(checkers)) + "|")
+    print("|---" * (6 + len(checkers)) + "|")
     for case in cases:
-        robot, eps, *zst = case.split(":")
-        out = os.path.join(outdir, "%s_%s" % (robot, eps))
+        robot, eps, *flags = case.split(":")
+        zst, v3 = "zst" in flags, "v3" in flags
+        out = os.path.join(outdir, "%s_%s%s" % (robot, eps, "_v3" if v3 else ""))
         cpu, _, rss, _, st = measure([aspects, "solve", os.path.join(robots, robot + ".robot"),
                                       "--eps", eps, "--threads", threads, "--out", out, "--quiet"]
-                                     + (["--compress-cert"] if zst == ["zst"] else []))
+                                     + (["--compress-cert"] if zst else [])
+                                     + (["--cert-format", "3"] if v3 else []))
         if st != 0:
             sys.exit("solve %s failed" % case)
-        cert = os.path.join(out, "aspects.cert" + (".zst" if zst == ["zst"] else ""))
+        cert = os.path.join(out, "aspects.cert" + (".zst" if zst else ""))
+        with open(os.path.join(out, "boxes.csv")) as f:
+            boxes = sum(1 for _ in f) - 1
+        with open(os.path.join(out, "summary.json")) as f:
+            csncs = json.load(f)["csncs"]
+        unpack = "zstd -dc %s | " % cert if zst else ""
+        archived = int(subprocess.run(unpack + "zstd -12 -T2 -c %s | wc -c" % ("" if zst else cert),
+                                      shell=True, stdout=subprocess.PIPE, check=True).stdout)
         runs = [[] for _ in checkers]
         for _ in range(reps):
             for i, c in enumerate(checkers):
@@ -54,7 +67,9 @@ def main():
                 if not r[3].startswith("check_cert: VERIFIED"):
                     sys.exit("%s on %s: %s" % (c, cert, r[3][:200]))
                 runs[i].append(r)
-        row = "| %s %s | %.2f (%.0f) |" % (robot, eps, cpu, rss)
+        row = "| %s %s%s | %d | %d (%d) | %d | %.1f | %.2f (%.0f) |" % (
+            robot, eps, " (format 3)" if v3 else "", boxes, csncs["count"], csncs["filtered"],
+            csncs["separated_lower_bound"], archived / boxes, cpu, rss)
         for r in runs:
             c = statistics.median(x[0] for x in r)
             row += " %.2f, %.2f, %.2f, %.0f |" % (c, c / cpu, statistics.median(x[1] for x in r),

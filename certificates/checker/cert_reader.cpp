@@ -49,6 +49,7 @@ LineReader::~LineReader() {
 }
 
 LineReader& LineReader::next() {
+  finish_print();
   EVP_DigestUpdate(md_, bytes_read_.data(), bytes_read_.size());  // a binary record's
   bytes_read_.clear();
   binary_ = false;
@@ -61,6 +62,7 @@ LineReader& LineReader::next() {
       bytes_ += bytes_read_.size();
       pos_ = 0;
       binary_ = true;
+      printed_ = false;
       return *this;
     }
     if (c != EOF) std::ungetc(c, f_);
@@ -72,6 +74,7 @@ LineReader& LineReader::next() {
   if (n <= 0) malformed(line_, "unexpected end of file");
   bytes_ += uint64_t(n);
   EVP_DigestUpdate(md_, line_buf_, size_t(n));
+  if (print_) std::fwrite(line_buf_, 1, size_t(n), stdout);
   if (line_buf_[n - 1] != '\n') malformed(line_, "truncated record (no newline at end of file)");
   fields_.clear();
   size_t start = 0;
@@ -95,6 +98,7 @@ std::string LineReader::raw(size_t n) {
   if (n && std::fread(&s[0], 1, n, f_) != n) malformed(line_ + 1, "model text truncated");
   EVP_DigestUpdate(md_, s.data(), n);
   bytes_ += n + 1;
+  if (print_) std::printf("%s\n", s.c_str());
   // Printable ASCII, tabs and newlines only, as the rest of the file: a '\r' (or another
   // control or non-ASCII byte, e.g. a bidi override) inside a comment makes the model
   // display differently from what the checker parses ("l = 1 #\rl = 2" shows l = 2).
@@ -113,6 +117,7 @@ std::string LineReader::raw(size_t n) {
 }
 
 void LineReader::expect_eof() {
+  finish_print();
   if (std::fgetc(f_) != EOF) malformed(line_ + 1, "content after 'end'");
   // A compressed file is whole only once its frame's end and checksum were read.
   if (std::ferror(f_)) malformed(line_ + 1, kUnreadable);
@@ -237,7 +242,24 @@ double LineReader::end(double a, double b, bool upper, int64_t offset, int bits)
   if (f.raw) return f.x;
   const double x = std::fma(double(f.z + offset), std::ldexp(b - a, -bits), upper ? b : a);
   if (!std::isfinite(x)) malformed(line_, "a coded end is not finite");
+  bin_[pos_ - 1].x = x;  // for --print
+  bin_[pos_ - 1].raw = true;
   return x;
+}
+
+// The binary record read last as text: its kind and fields, an end not decoded (the check
+// stopped before it) as '?'.
+void LineReader::finish_print() {
+  if (!print_ || !binary_ || printed_) return;
+  printed_ = true;
+  std::printf("%.*s", int(bin_kind_.size()), bin_kind_.data());
+  for (const Field& f : bin_) {
+    if (f.type == Field::Int) std::printf(" %lld", (long long)f.z);
+    else if (f.type == Field::Word) std::printf(" %.*s", int(f.len), words_.data() + f.off);
+    else if (f.raw) std::printf(" %a", f.x);
+    else std::printf(" ?");
+  }
+  std::printf("\n");
 }
 
 int LineReader::byte() {

@@ -202,6 +202,7 @@ void Checker::run(const CheckOptions& o) {
   if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
     work_base = std::max(10, std::min(40, std::atoi(e)));
   doubles = !o.trusted_only;
+  rd.print(o.print);
   header();
   threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   // Each thread holds an evaluator of up to 2^22 units (read_model): at most 2^25 units in
@@ -292,5 +293,6 @@ cc::Verdict cc::check_certificate(FILE* f, const CheckOptions& o) {
     out.outcome = Outcome::Rejected;
     out.reason = std::string("internal error: ") + e.what();
   }
+  if (c) c->rd.finish_print();  // the record the check stopped at
   return out;
 }

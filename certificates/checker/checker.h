@@ -83,6 +83,10 @@ class LineReader {
   // Format 3: binary records may follow, their fields sized by n, nv and p.
   void allow_binary(int n, int nv, int p);
   bool binary() const { return binary_; }  // the record read last is binary
+  // --print: every record as version 2 text on stdout, a binary one with the ends decoded
+  // so far once the next is read (or finish_print() is called).
+  void print(bool on) { print_ = on; }
+  void finish_print();
   // Reads exactly `n` raw bytes (the embedded model text) and counts its lines.
   std::string raw(size_t n);
   void expect_eof();                         // nothing may follow the last record
@@ -100,7 +104,7 @@ class LineReader {
   std::vector<std::string_view> fields_;  // views into line_buf_, valid until the next read
   size_t pos_ = 0;                        // the next field word() returns
   // Binary records (cert_reader.cpp): the decoded fields, each an integer, a word or a
-  // coded end (raw: x is the end; else z is its code).
+  // coded end (raw: x is the end, as written or once end() decoded it; else z is its code).
   struct Field {
     enum Type : uint8_t { Int, Word, Code } type;
     bool raw = false;
@@ -108,7 +112,7 @@ class LineReader {
     double x = 0;
     uint32_t off = 0, len = 0;  // a word: words_[off, off + len)
   };
-  bool allow_binary_ = false, binary_ = false;
+  bool allow_binary_ = false, binary_ = false, print_ = false, printed_ = false;
   std::string_view bin_kind_;
   int n_ = 0, nv_ = 0, p_ = 0;
   std::vector<Field> bin_;
@@ -130,6 +134,7 @@ struct CheckOptions {
   bool trust_factors = false;  // accept a bound that rests on user-supplied factors
   int threads = 0;             // threads for the interval proofs (0: one per core)
   bool trusted_only = false;   // no speed layer: proofs in line, the plain sweep of M
+  bool print = false;          // every record as text on stdout (FORMAT.md, "Format 3")
 };
 
 // The outcome of a check; its value is check_cert's exit status.

@@ -110,6 +110,9 @@ int check_main(int argc, char** argv) {
   app.add_flag("--trusted-only", o.trusted_only,
                "check with the trusted core alone: proofs in line, one thread, the plain sweep "
                "of M (slower; the same verdict)");
+  app.add_flag("--print", o.print,
+               "print every record as text on stdout while checking it (binary records of "
+               "format 3 with their ends decoded), then the verdict");
   app.add_option("FILE", path, "the certificate (text, or zstd-compressed)")->required();
   try {
     app.parse(argc, argv);
@@ -128,6 +131,7 @@ int check_main(int argc, char** argv) {
       return usage("rank " + std::to_string(r) + " has another executable, certificate or "
                    "options than rank 0 (every rank reads the whole certificate)");
     o.quiet = o.quiet || ranks::rank() > 0;
+    o.print = o.print && ranks::rank() == 0;
   }
   Verdict v;
   if (FILE* f = std::fopen(path.c_str(), "rb")) {
