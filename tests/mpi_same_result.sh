@@ -4,6 +4,7 @@
 # equal but for its times and memory; check_cert verifies each certificate; no temporary
 # file is left in the output directories or in the ranks' TMPDIR.
 # Usage: mpi_same_result.sh MPIRUN ASPECTS CHECK_CERT MODEL EPS [P...]   (default P: 1 2 3)
+# SOLVE_ARGS (environment): more options for every solve, e.g. --cert-format 3.
 #
 # Seen failing, each once on purpose, then restored:
 #  - rank 0 sending the box of the subtree before the one it hands out (task_message,
@@ -18,20 +19,21 @@ set -eu
 mpirun=$1 aspects=$2 check=$3 model=$4 eps=$5
 shift 5
 processes=${*:-1 2 3}
+extra=${SOLVE_ARGS:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "mpi_same_result: $*" >&2; exit 1; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir "$work/tmp"
 
-"$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --out "$work/single" ||
+"$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --out "$work/single" $extra ||
   fail "single process exited $?"
 for p in $processes; do
   out="$work/p$p"
   # --bind-to none: each rank's two threads may use any core.
   TMPDIR="$work/tmp" "$mpirun" --oversubscribe --bind-to none -n $p \
     -x TMPDIR -x OMPI_ALLOW_RUN_AS_ROOT -x OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
-    "$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --out "$out" ||
+    "$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --out "$out" $extra ||
     fail "mpirun -n $p exited $?"
   for f in boxes.csv aspects.cert aspects.idx; do
     cmp "$work/single/$f" "$out/$f" || fail "P = $p: $f differs from the single process's"
