@@ -90,6 +90,11 @@ LineReader& LineReader::next() {
     start = i + 1;
   }
   pos_ = 1;
+  // Format 3 writes these records in binary only: a text one is a version 2 file relabelled.
+  static const char* const compact[] = {"P", "B", "X", "U", "N", "S", "K", "csnc"};
+  for (const char* k : compact)
+    if (allow_binary_ && fields_[0] == k)
+      malformed(line_, std::string("a text '") + k + "' record in a format 3 certificate");
   return *this;
 }
 
