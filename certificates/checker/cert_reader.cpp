@@ -332,9 +332,8 @@ void LineReader::decode(int tag) {
     std::string s;
     for (int i = 0; i < k; i += 4) {
       int b = byte();
-      for (int j = 0; j < 4; ++j, b >>= 2)
-        if (i + j < k) s += "0+-?"[b & 3];
-      if (b) s += '?';
+      for (int j = 0; j < 4 && i + j < k; ++j, b >>= 2) s += "0+-?"[b & 3];
+      if (b) s += '?';  // bits after the k-th character
     }
     return s;
   };
