@@ -115,7 +115,7 @@ void CompactTree::record(const std::string& line, std::string& out) {
     const long v = r.integer(1);
     const double x = r.real(2);
     tagged(out, 0xA0, v);
-    end(out, x, &cell[2 * v], false, int64_t(1) << (grid::kBits - 1));  // the middle: 0
+    end(out, x, &cell[2 * v], false, int64_t(1) << (grid::kBits - 1));  // the middle is 0
     Cell right = cell;
     right[2 * v] = x;
     cell[2 * v + 1] = x;

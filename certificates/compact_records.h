@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "certificate_grid.h"
+
 namespace aspects {
 
 // Low-level coding, shared by the tree and the sections.
@@ -18,7 +20,7 @@ void raw(std::string& out, double x);  // 8 bytes, little-endian binary64
 // An end x on the grid of [a, b] from r (an end of it), offset by `offset` steps; its
 // 8 bytes when it is not on it.
 void end(std::string& out, double x, double a, double b, double r, int64_t offset = 0,
-         int bits = 16);
+         int bits = grid::kBits);
 // "+-0" characters (p of them, or "."), two bits each.
 void signs(std::string& out, const char* s, int p);
 }  // namespace compact
@@ -37,7 +39,7 @@ class CompactTree {
  private:
   using Cell = std::vector<double>;
   void end(std::string& out, double x, const double* ref, bool upper, int64_t offset = 0,
-           int bits = 16);
+           int bits = grid::kBits);
   Cell& current();
   std::vector<Cell> stack_;
   Cell cell_;

@@ -64,7 +64,7 @@ struct Checker {
   [[noreturn]] void reject(const std::string& why) { rejected(rec(), why); }
   // k intervals: in a binary record each end coded against the same end of `ref`'s
   // interval (FORMAT.md, "Format 3"); in a text record, as written.
-  Box intervals(const double* ref, size_t k, int bits = 16) {
+  Box intervals(const double* ref, size_t k, int bits = kGridBits) {
     if (!rd.binary()) return rd.intervals(k);
     Box out(2 * k);
     for (size_t j = 0; j < 2 * k; ++j)

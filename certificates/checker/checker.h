@@ -57,6 +57,11 @@ double parse_real(std::string_view s, long rec);
 // decompressed bytes that owns f. A corrupt or truncated stream reads as a read error.
 FILE* decompressed(FILE* f);
 
+// Format 3's grids (FORMAT.md, "Format 3"): G of most coded ends, G of contraction ends,
+// and the OFFSET of bisection points (the middle of the cell is code 0).
+inline constexpr int kGridBits = 16, kContractionGridBits = 10;
+inline constexpr int64_t kMiddleOffset = int64_t(1) << (kGridBits - 1);
+
 class LineReader {
  public:
   explicit LineReader(FILE* f);  // takes ownership of f, and reads it through decompressed()
@@ -79,7 +84,7 @@ class LineReader {
   std::vector<double> intervals(size_t k);
   // An end coded against [a, b] (format 3: fma(z, u, a or, if `upper`, b), u = (b − a)·2^-16,
   // z the code plus `offset`, or 8 bytes); in a text record, the next real.
-  double end(double a, double b, bool upper, int64_t offset = 0, int bits = 16);
+  double end(double a, double b, bool upper, int64_t offset = 0, int bits = kGridBits);
   // Format 3: binary records may follow, their fields sized by n, nv and p.
   void allow_binary(int n, int nv, int p);
   bool binary() const { return binary_; }  // the record read last is binary

@@ -41,7 +41,7 @@ void Checker::tree() {
 void Checker::contraction(Box& cell) {
   rd.count(4);
   const long v = index(nv);
-  const Box lh = intervals(&cell[2 * v], 1, 10);  // binary: on the coarser grid 2^-10
+  const Box lh = intervals(&cell[2 * v], 1, kContractionGridBits);  // binary: on a coarser grid
   const double lo = cell[2 * v];
   const double hi = cell[2 * v + 1];
   if (!within(lo, hi, lh[0], lh[1])) reject("contraction is not inside the cell");
@@ -56,7 +56,7 @@ void Checker::contraction(Box& cell) {
 void Checker::bisection(Box& cell, std::vector<Box>& stack) {
   rd.count(3);
   const long v = index(nv);
-  const double x = rd.end(cell[2 * v], cell[2 * v + 1], false, 1 << 15);  // binary: 0 the middle
+  const double x = rd.end(cell[2 * v], cell[2 * v + 1], false, kMiddleOffset);
   if (!(cell[2 * v] < x && x < cell[2 * v + 1]))
     reject("bisection point not strictly inside the cell");
   stack.push_back(cell);
