@@ -63,7 +63,8 @@ void add_solve(CLI::App& app, Commands& c) {
       ->excludes(no_cert);
   solve->add_option("--cert-format", so.cert_format,
                     "certificate format: 2 (text) or 3 (the search tree, links and CSNCs in "
-                    "binary, about 5x smaller; ends moved onto the grids it codes compactly)")
+                    "binary, 2-8x smaller after compression; ends moved onto the grids it "
+                    "codes compactly, so the boxes differ slightly from format 2's)")
       ->check(CLI::IsMember({2, 3}))
       ->default_val(2)
       ->excludes(no_cert);
