@@ -159,7 +159,9 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
         std::string records;
         bool complete;
         if (certificate) {
-          TreeRecordFile sink(records_path(job.rank(), thread), int(factors.size()), model.n());
+          const int p = int(factors.size());
+          TreeRecordFile sink(records_path(job.rank(), thread), p, model.n(),
+                              config.grid_records ? compact_tree(subtree.box, model, p) : nullptr);
           complete = search_subtree(model, config, factors, subtree, part, &sink);
           records = read_file(sink.path());
         } else {

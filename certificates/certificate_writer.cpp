@@ -34,7 +34,7 @@ std::string sha256_hex(const std::string& data) {
 CertificateWriter::CertificateWriter(const std::string& path, const Model& model,
                                      long precision, double tau, double eps, bool compress,
                                      int format)
-    : file_(path), compressed_(compress), format_(format), command_(model.command) {
+    : file_(path), compressed_(compress), format_(format), model_(model) {
   f_ = file_.stream();
   // Level 3 (zstd's default) on one helper thread, beside the writing of the records
   // (bench/RESULTS.md has the sizes).
@@ -96,16 +96,13 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
   put("domain");
   for (const auto& x : domain) interval(x);
   end_line();
-  if (format_ == 3) {
-    std::vector<double> root;
-    for (const auto& x : domain) root.insert(root.end(), {x.lo_down(), x.hi_up()});
-    compact_ = std::make_unique<CompactTree>(root, command_, p_);
-  }
   line("factors " + std::to_string(p_));
   for (const auto& f : factors) line("factor " + f.kind);
   line("tree");
   if (!top_)  // else restored
-    top_ = std::make_unique<TreeRecordFile>(file_.temporary_path() + ".top", p_, n_);
+    top_ = std::make_unique<TreeRecordFile>(
+        file_.temporary_path() + ".top", p_, n_,
+        format_ == 3 ? compact_tree(domain, model_, p_) : nullptr);
 }
 
 std::string CertificateWriter::records(int32_t task) {
@@ -125,20 +122,23 @@ void CertificateWriter::restore(int32_t task, const std::string& records) {
   }
   std::string name = task < 0 ? ".top" : ".t" + std::to_string(task);
   *slot = std::make_unique<TreeRecordFile>(file_.temporary_path() + name, p_, n_);
+  if (format_ == 3) (*slot)->restored_binary();
   (*slot)->write(records);
   (*slot)->close();
 }
 
-TreeSink* CertificateWriter::subtree(int32_t task) {
+TreeSink* CertificateWriter::subtree(int32_t task, const Box& root) {
   if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);
   const std::string name = file_.temporary_path() + ".t" + std::to_string(task);
-  tasks_[task] = std::make_unique<TreeRecordFile>(name, p_, n_);
+  tasks_[task] = std::make_unique<TreeRecordFile>(
+      name, p_, n_, format_ == 3 ? compact_tree(root, model_, p_) : nullptr);
   return tasks_[task].get();
 }
 
 // Copies a subtree's records, giving output boxes their global ids (depth-first order)
 // and replacing each deferred-subtree marker by that subtree's records.
 void CertificateWriter::splice(TreeRecordFile& stream) {
+  if (stream.binary()) return splice_binary(stream);
   stream.close();
   FILE* in = std::fopen(stream.path().c_str(), "rb");
   if (!in) throw std::runtime_error("cannot read " + stream.path());
@@ -148,17 +148,6 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
   while ((len = getline(&buf, &cap, in)) > 0) {
     if (buf[0] == '@') {
       splice(*tasks_.at(std::stol(buf + 1)));
-      continue;
-    }
-    if (compact_) {
-      std::string text(buf, size_t(len - 1));  // without its newline
-      if ((buf[0] == 'U' || buf[0] == 'S' || buf[0] == 'N') && buf[1] == ' ')
-        text = std::string(1, buf[0]) + " " + std::to_string(leaves_++) +
-               std::strchr(buf + 2, ' ');
-      if (text.back() == '\n') text.pop_back();
-      record_.clear();
-      compact_->record(text, record_);
-      binary(record_);
       continue;
     }
     if ((buf[0] == 'U' || buf[0] == 'S' || buf[0] == 'N') && buf[1] == ' ') {
@@ -179,10 +168,54 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
   std::remove(stream.path().c_str());
 }
 
+// Format 3: the records are copied as they are (ids are implied), each deferred subtree
+// spliced at its mark; the trailer gives the records and leaves they count.
+void CertificateWriter::splice_binary(TreeRecordFile& stream) {
+  stream.close();
+  FILE* in = std::fopen(stream.path().c_str(), "rb");
+  if (!in) throw std::runtime_error("cannot read " + stream.path());
+  unsigned char trailer[16];
+  std::fseek(in, 0, SEEK_END);
+  const long size = std::ftell(in) - 16;
+  if (size < 0 || std::fseek(in, size, SEEK_SET) != 0 || std::fread(trailer, 1, 16, in) != 16)
+    throw std::runtime_error("cannot read " + stream.path());
+  uint64_t count[2] = {0, 0};
+  for (int i = 0; i < 16; ++i) count[i / 8] |= uint64_t(trailer[i]) << (8 * (i % 8));
+  std::rewind(in);
+  std::vector<char> buf(1 << 20);
+  long at = 0;
+  const auto copy_to = [&](long end) {
+    while (at < end) {
+      const size_t want = size_t(std::min<long>(end - at, long(buf.size())));
+      const size_t k = std::fread(buf.data(), 1, want, in);
+      if (k == 0) throw std::runtime_error("cannot read " + stream.path());
+      std::fwrite(buf.data(), 1, k, f_);
+      at += long(k);
+    }
+  };
+  for (const TreeRecordFile::Mark& m : stream.marks()) {
+    copy_to(m.offset);
+    splice(*tasks_.at(m.task));
+  }
+  copy_to(size);
+  std::fclose(in);
+  bytes_ += size;
+  lines_ += long(count[0]);
+  leaves_ += long(count[1]);
+  std::remove(stream.path().c_str());  // as splice(): its disk space is free for the rest
+}
+
+std::unique_ptr<CompactTree> compact_tree(const Box& root, const Model& model, int factors) {
+  std::vector<double> ends;
+  for (const Interval& x : root) ends.insert(ends.end(), {x.lo_down(), x.hi_up()});
+  return std::make_unique<CompactTree>(ends, model.command, factors);
+}
+
 // ---------------------------------------------------------------- TreeRecordFile
 
-TreeRecordFile::TreeRecordFile(const std::string& path, int factors, int n)
-    : path_(path), p_(factors), n_(n) {
+TreeRecordFile::TreeRecordFile(const std::string& path, int factors, int n,
+                               std::unique_ptr<CompactTree> compact)
+    : path_(path), p_(factors), n_(n), compact_(std::move(compact)), binary_(bool(compact_)) {
   f_ = std::fopen(path_.c_str(), "wb");
   if (!f_) throw std::runtime_error("cannot write " + path_);
 }
@@ -194,6 +227,13 @@ TreeRecordFile::~TreeRecordFile() {
 
 void TreeRecordFile::close() {
   if (!f_) return;
+  if (binary_ && !trailer_) {
+    trailer_ = true;
+    record_.clear();
+    for (uint64_t c : {records_, leaves_})
+      for (int i = 0; i < 8; ++i) record_ += char((c >> (8 * i)) & 0xff);
+    std::fwrite(record_.data(), 1, record_.size(), f_);
+  }
   // A write that failed earlier (disk full) leaves only the error flag: check it too.
   bool ok = !std::ferror(f_);
   ok = std::fclose(f_) == 0 && ok;
@@ -212,29 +252,60 @@ void TreeRecordFile::signs(const int8_t* s) {
   for (int i = 0; i < p_; ++i) std::fputc(s[i] > 0 ? '+' : s[i] < 0 ? '-' : '0', f_);
 }
 
+void TreeRecordFile::emit() {
+  std::fwrite(record_.data(), 1, record_.size(), f_);
+  record_.clear();
+  ++records_;
+}
+
 void TreeRecordFile::contraction(int var, double lo, double hi) {
+  if (compact_) return compact_->contraction(var, lo, hi, record_), emit();
   std::fprintf(f_, "P %d %a %a\n", var, lo, hi);
 }
 
-void TreeRecordFile::split(int var, double at) { std::fprintf(f_, "B %d %a\n", var, at); }
+void TreeRecordFile::split(int var, double at) {
+  if (compact_) return compact_->split(var, at, record_), emit();
+  std::fprintf(f_, "B %d %a\n", var, at);
+}
 
-void TreeRecordFile::discard(const char* hint) { std::fprintf(f_, "X %s\n", hint); }
+void TreeRecordFile::discard(const char* hint) {
+  if (compact_) return compact_->discard(hint, record_), emit();
+  std::fprintf(f_, "X %s\n", hint);
+}
 
-void TreeRecordFile::deferred(int32_t task) { std::fprintf(f_, "@%d\n", task); }
+void TreeRecordFile::deferred(int32_t task) {
+  if (!compact_) {
+    std::fprintf(f_, "@%d\n", task);
+    return;
+  }
+  compact_->deferred();
+  marks_.push_back({std::ftell(f_), task});
+}
 
 void TreeRecordFile::undecided(int32_t id, const int8_t* s) {
+  if (compact_) return compact_->leaf(false, s, record_), ++leaves_, emit();
   std::fprintf(f_, "U %d", id);
   signs(s);
   std::fputc('\n', f_);
 }
 
 void TreeRecordFile::unexplored(int32_t id, const int8_t* s) {
+  if (compact_) return compact_->leaf(true, s, record_), ++leaves_, emit();
   std::fprintf(f_, "N %d", id);
   signs(s);
   std::fputc('\n', f_);
 }
 
 void TreeRecordFile::solution(int32_t id, const int8_t* s, const SolutionProof& proof) {
+  if (compact_) {
+    std::vector<double> Q, image, weights(proof.dx);
+    for (const Interval& q : proof.existence.inflated) Q.insert(Q.end(), {q.lo_down(), q.hi_up()});
+    for (const Interval& q : proof.existence.image) image.insert(image.end(), {q.lo_down(), q.hi_up()});
+    weights.insert(weights.end(), proof.dq.begin(), proof.dq.end());
+    compact_->solution(s, Q, image, weights, record_);
+    ++leaves_;
+    return emit();
+  }
   std::fprintf(f_, "S %d", id);
   signs(s);
   auto interval = [&](const Interval& x) { std::fprintf(f_, " %a %a", x.lo_down(), x.hi_up()); };

@@ -18,10 +18,14 @@ namespace aspects {
 extern const char* const kToolVersion;
 
 // Tree records of one subtree, buffered in a temporary file until the writer splices
-// the subtrees in depth-first order.
+// the subtrees in depth-first order: version 2 text (a deferred subtree is a line '@TASK',
+// output ids local to the subtree), or, with a coder, format 3's binary records (implied
+// ids; deferred subtrees kept by byte offset in marks(); the file ends with two u64, little
+// endian: its records and its leaves).
 class TreeRecordFile : public TreeSink {
  public:
-  TreeRecordFile(const std::string& path, int factors, int n);
+  TreeRecordFile(const std::string& path, int factors, int n,
+                 std::unique_ptr<CompactTree> compact = nullptr);
   ~TreeRecordFile() override;
   TreeRecordFile(const TreeRecordFile&) = delete;
   TreeRecordFile& operator=(const TreeRecordFile&) = delete;
@@ -36,15 +40,33 @@ class TreeRecordFile : public TreeSink {
   void finished() override { close(); }
 
   const std::string& path() const { return path_; }
-  void close();  // flushes; the file can then be read back
+  void close();  // flushes (format 3: after the trailer); the file can then be read back
   void write(const std::string& records);
+  // Format 3: the file holds binary records; `restored`: written by another's TreeRecordFile
+  // (records passed to write()), trailer included.
+  bool binary() const { return binary_; }
+  void restored_binary() { binary_ = trailer_ = true; }
+  struct Mark {
+    long offset;  // bytes of this file's records before the deferred subtree's place
+    int32_t task;
+  };
+  const std::vector<Mark>& marks() const { return marks_; }
 
  private:
   void signs(const int8_t* s);
+  void emit();  // format 3: writes record_, one record
   std::string path_;
   FILE* f_ = nullptr;
   int p_, n_;
+  std::unique_ptr<CompactTree> compact_;
+  bool binary_ = false, trailer_ = false;
+  std::string record_;
+  uint64_t records_ = 0, leaves_ = 0;
+  std::vector<Mark> marks_;
 };
+
+// The format 3 coder of a subtree whose root cell is `root`.
+std::unique_ptr<CompactTree> compact_tree(const Box& root, const Model& model, int factors);
 
 class CertificateWriter : public CertificateSink {
  public:
@@ -58,7 +80,7 @@ class CertificateWriter : public CertificateSink {
 
   void begin(const Box& domain, const std::vector<Factor>& factors) override;
   TreeSink* top() override { return top_.get(); }
-  TreeSink* subtree(int32_t task) override;
+  TreeSink* subtree(int32_t task, const Box& root) override;
 
   // Checkpoints (apps/checkpoint.*): the records of a finished part (task -1: the top),
   // and a finished part's records put back before a resumed search (instead of searching
@@ -77,6 +99,7 @@ class CertificateWriter : public CertificateSink {
   void interval(const Interval& x);
   void end_line();
   void splice(TreeRecordFile& stream);
+  void splice_binary(TreeRecordFile& stream);
   void binary(const std::string& record);  // one format 3 record
   void links(const Model& model, const AspectsResult& r);
   void csncs(const AspectsResult& r);
@@ -90,9 +113,8 @@ class CertificateWriter : public CertificateSink {
   long lines_ = 0, leaves_ = 0, bytes_ = 0;
   bool compressed_ = false;
   int format_ = 2;
-  std::vector<int> command_;
-  std::unique_ptr<CompactTree> compact_;  // format 3: the tree's coder
-  std::string record_;                    // scratch: one binary record
+  const Model& model_;
+  std::string record_;  // scratch: one binary record
 };
 
 }  // namespace aspects

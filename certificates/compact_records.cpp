@@ -51,26 +51,17 @@ void signs(std::string& out, const char* s, int p) {
 
 namespace {
 
-// The fields of a text record, as strtod and strtol read them (the writer's own text).
-struct Fields {
-  explicit Fields(const std::string& line) {
-    size_t start = 0;
-    while (start <= line.size()) {
-      size_t sp = line.find(' ', start);
-      if (sp == std::string::npos) sp = line.size();
-      f.push_back(line.substr(start, sp - start));
-      start = sp + 1;
-    }
-  }
-  double real(size_t i) const { return std::strtod(f.at(i).c_str(), nullptr); }
-  long integer(size_t i) const { return std::strtol(f.at(i).c_str(), nullptr, 10); }
-  std::vector<std::string> f;
-};
-
 // A variable in the tag of P and B records: 0..30 in the tag itself, else 31 then the rest.
-void tagged(std::string& out, int base, long v) {
+void tagged(std::string& out, int base, int v) {
   out += char(base + (v < 31 ? v : 31));
   if (v >= 31) compact::varint(out, uint64_t(v - 31));
+}
+
+// Two bits a factor, as compact::signs codes "+-0".
+void packed_signs(std::string& out, const int8_t* s, int p) {
+  std::string chars(size_t(p), '0');
+  for (int i = 0; i < p; ++i) chars[i] = s[i] > 0 ? '+' : s[i] < 0 ? '-' : '0';
+  compact::signs(out, chars.c_str(), p);
 }
 
 }  // namespace
@@ -96,65 +87,68 @@ void CompactTree::end(std::string& out, double x, const double* ref, bool upper,
   raw_ends += out[before] == 0;
 }
 
-void CompactTree::record(const std::string& line, std::string& out) {
-  const Fields r(line);
-  const std::string& kind = r.f[0];
+void CompactTree::contraction(int v, double lo, double hi, std::string& out) {
   Cell& cell = current();
-  if (kind == "P") {
-    const long v = r.integer(1);
-    const double lo = r.real(2), hi = r.real(3);
-    tagged(out, 0x80, v);
-    end(out, lo, &cell[2 * v], false, 0, grid::kContractionBits);
-    end(out, hi, &cell[2 * v], true, 0, grid::kContractionBits);
-    cell[2 * v] = lo;
-    cell[2 * v + 1] = hi;
-    return;
-  }
+  tagged(out, 0x80, v);
+  end(out, lo, &cell[2 * v], false, 0, grid::kContractionBits);
+  end(out, hi, &cell[2 * v], true, 0, grid::kContractionBits);
+  cell[2 * v] = lo;
+  cell[2 * v + 1] = hi;
+}
+
+void CompactTree::split(int v, double at, std::string& out) {
+  Cell& cell = current();
   open_ = false;
-  if (kind == "B") {
-    const long v = r.integer(1);
-    const double x = r.real(2);
-    tagged(out, 0xA0, v);
-    end(out, x, &cell[2 * v], false, int64_t(1) << (grid::kBits - 1));  // the middle is 0
-    Cell right = cell;
-    right[2 * v] = x;
-    cell[2 * v + 1] = x;
-    stack_.push_back(std::move(right));
-    stack_.push_back(std::move(cell));
-    return;
-  }
-  if (kind == "X") {
-    const std::string& h = r.f[1];
-    out += char(0xC0);
-    const bool eq = h.compare(0, 2, "eq") == 0;
-    const long i = h == "hs" ? -1 : std::strtol(h.c_str() + (eq ? 2 : 1), nullptr, 10);
-    compact::varint(out, h == "hs" ? 0 : eq ? 1 + 2 * uint64_t(i) : 2 + 2 * uint64_t(i));
-    return;
-  }
-  const long id = r.integer(1);
-  if (id != next_id_) throw std::logic_error("format 3: output ids out of order");
-  ++next_id_;
-  out += char(kind == "U" ? 0xC1 : kind == "N" ? 0xC2 : 0xC3);  // the id is implied
-  compact::signs(out, r.f[2].c_str(), p_);
-  if (kind != "S") return;
-  const int n = int(command_.size());
-  size_t k = 3;
-  std::vector<double> Q(2 * n);
-  for (int j = 0; j < n; ++j, k += 2) {
-    Q[2 * j] = r.real(k);
-    Q[2 * j + 1] = r.real(k + 1);
+  tagged(out, 0xA0, v);
+  end(out, at, &cell[2 * v], false, int64_t(1) << (grid::kBits - 1));  // the middle is 0
+  Cell right = cell;
+  right[2 * v] = at;
+  cell[2 * v + 1] = at;
+  stack_.push_back(std::move(right));
+  stack_.push_back(std::move(cell));
+}
+
+void CompactTree::discard(const char* hint, std::string& out) {
+  current();
+  open_ = false;
+  out += char(0xC0);
+  const std::string h(hint);
+  const bool eq = h.compare(0, 2, "eq") == 0;
+  const uint64_t i = h == "hs" ? 0 : std::strtoul(h.c_str() + (eq ? 2 : 1), nullptr, 10);
+  compact::varint(out, h == "hs" ? 0 : eq ? 1 + 2 * i : 2 + 2 * i);
+}
+
+void CompactTree::leaf(bool unexplored, const int8_t* signs, std::string& out) {
+  current();
+  open_ = false;
+  out += char(unexplored ? 0xC2 : 0xC1);  // the id is implied
+  packed_signs(out, signs, p_);
+}
+
+void CompactTree::solution(const int8_t* signs, const std::vector<double>& Q,
+                           const std::vector<double>& image, const std::vector<double>& weights,
+                           std::string& out) {
+  const Cell& cell = current();
+  open_ = false;
+  out += char(0xC3);
+  packed_signs(out, signs, p_);
+  const size_t n = command_.size();
+  for (size_t j = 0; j < n; ++j) {
     end(out, Q[2 * j], &cell[2 * command_[j]], false);
     end(out, Q[2 * j + 1], &cell[2 * command_[j]], true);
   }
-  for (int j = 0; j < n; ++j, k += 2) {
-    end(out, r.real(k), &Q[2 * j], false);
-    end(out, r.real(k + 1), &Q[2 * j], true);
+  for (size_t j = 0; j < n; ++j) {
+    end(out, image[2 * j], &Q[2 * j], false);
+    end(out, image[2 * j + 1], &Q[2 * j], true);
   }
-  k += 3 * size_t(n) * n;  // the preconditioners: the checker computes its own
-  for (int j = 0; j < 2 * n; ++j, ++k) {  // DX, DQ on the grid of [1, 2]
-    const double one_two[2] = {1.0, 2.0};
-    end(out, r.real(k), one_two, false);
-  }
+  // The preconditioners are left out: the checker computes its own.
+  const double one_two[2] = {1.0, 2.0};
+  for (double w : weights) end(out, w, one_two, false);  // DX, DQ on the grid of [1, 2]
+}
+
+void CompactTree::deferred() {
+  current();  // the subtree's records, written elsewhere, start from this cell
+  open_ = false;
 }
 
 }  // namespace aspects

@@ -25,14 +25,23 @@ void end(std::string& out, double x, double a, double b, double r, int64_t offse
 void signs(std::string& out, const char* s, int p);
 }  // namespace compact
 
-// Re-codes the tree records of format 2 text (one line each, output ids already global)
-// as format 3 records, following the cells as the checker does, from the root cell.
+// Codes the tree records of one subtree in format 3, following its cells as the checker
+// does from the subtree's root cell. Output ids are implied, so the records of subtrees
+// are spliced as they are.
 class CompactTree {
  public:
   // root: lo/hi pairs per variable; command: the commands' variable indices.
   CompactTree(std::vector<double> root, std::vector<int> command, int factors);
-  // Appends the coding of one record (its text without the newline) to `out`.
-  void record(const std::string& line, std::string& out);
+  // Each appends one record to `out` (P, B, X, U or N, S).
+  void contraction(int v, double lo, double hi, std::string& out);
+  void split(int v, double at, std::string& out);
+  void discard(const char* hint, std::string& out);
+  void leaf(bool unexplored, const int8_t* signs, std::string& out);
+  // Q, image: lo/hi pairs per command; weights: DX then DQ.
+  void solution(const int8_t* signs, const std::vector<double>& Q,
+                const std::vector<double>& image, const std::vector<double>& weights,
+                std::string& out);
+  void deferred();  // this node is a subtree whose records are written elsewhere
   // Ends coded by their 8 bytes, and all ends (the grid's coverage).
   long raw_ends = 0, ends = 0;
 
@@ -43,10 +52,9 @@ class CompactTree {
   Cell& current();
   std::vector<Cell> stack_;
   Cell cell_;
-  bool open_ = false;  // cell_ is the node being read
+  bool open_ = false;  // cell_ is the node being written
   std::vector<int> command_;
   int p_;
-  long next_id_ = 0;
 };
 
 }  // namespace aspects

@@ -39,7 +39,7 @@ class CertificateSink {
   // The records of the top of the tree, and of each deferred subtree. subtree() is
   // called before the subtrees are searched (possibly in parallel, one sink each).
   virtual TreeSink* top() = 0;
-  virtual TreeSink* subtree(int32_t task) = 0;
+  virtual TreeSink* subtree(int32_t task, const Box& root) = 0;  // root: the subtree's cell
   // The records of subtree `task` as another process's TreeSink wrote them (a distributed
   // search: proofs/pipeline/remote_subtrees.h); then subtree(task) is not called.
   virtual void restore(int32_t task, const std::string& records) = 0;

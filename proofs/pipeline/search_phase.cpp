@@ -158,7 +158,7 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
           TreeSink* sink = nullptr;
           if (cert) {
             std::lock_guard<std::mutex> g(cert_lock);
-            sink = cert->subtree(k);
+            sink = cert->subtree(k, st.deferred[k].box);
           }
           PartClock clock;
           if (search_part(model, config, factors, st.deferred[k].box,
@@ -232,7 +232,7 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
   } else {
     std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);
     for (size_t k = 0; k < st.deferred.size(); ++k)
-      if (!st.done[k] && cert) sinks[k] = cert->subtree(int32_t(k));
+      if (!st.done[k] && cert) sinks[k] = cert->subtree(int32_t(k), st.deferred[k].box);
     parallel.arena().execute([&] {
       tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
         if (st.done[k]) return;
