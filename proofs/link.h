@@ -45,7 +45,9 @@ class LinkRecords {
   void push(const LinkProof& p);
   void append_one(const LinkRecords& o, size_t i) { add(o.record(i)); }
   size_t size() const { return size_; }
-  // The reads go through a cache of spilled records: not for two threads at once.
+  // The reads go through a cache of spilled records, one per thread: the certificate and
+  // the result index read them at once (apps/solve_outputs.cpp). A pointer returned stays
+  // valid until the same thread's next read.
   const double* witness(size_t i) const { return record(i); }
   double inflated_lo(size_t i, int j) const { return record(i)[n_ + 2 * j]; }
   double inflated_hi(size_t i, int j) const { return record(i)[n_ + 2 * j + 1]; }
@@ -62,8 +64,10 @@ class LinkRecords {
   size_t size_ = 0, spilled_ = 0;  // records; of which in the file
   std::vector<double> tail_;       // records spilled_ .. size_ - 1
   int fd_ = -1;
-  mutable std::vector<double> cache_;  // spilled records cache_first_ ..
-  mutable size_t cache_first_ = 0;
+  // Names this object's records for the per-thread caches (a new one whenever they change
+  // owner: a cache is never reused for another object's records).
+  uint64_t serial_ = next_serial();
+  static uint64_t next_serial();
 };
 
 // With `grid`, the witness and Q~ are chosen on the grids of box A that format 3 codes

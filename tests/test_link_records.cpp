@@ -6,12 +6,16 @@
 //  - spill() not clearing the tail: SpilledRecordsComeBackExactly and CopiesAreIndependent
 //    fail;
 //  - the cache's window read from record i instead of its first record: the same two fail;
-//  - the copy constructor copying only the tail: CopiesAreIndependent fails.
+//  - the copy constructor copying only the tail: CopiesAreIndependent fails;
+//  - one cache shared by every thread (as before the per-thread windows):
+//    TwoThreadsReadAtOnce crashes (a window resized under the other thread's reads).
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <thread>
 
 #include "link.h"
 
@@ -69,6 +73,27 @@ TEST(LinkRecords, SpilledRecordsComeBackExactly) {
   std::mt19937_64 rng(7);
   for (int t = 0; t < 5000; ++t) expect_record(r, rng() % count);
   EXPECT_THROW(r.witness(count), std::out_of_range);
+}
+
+// The certificate writer and the result index read the same records at once
+// (apps/solve_outputs.cpp): each thread must get its own numbers, whatever the other reads.
+TEST(LinkRecords, TwoThreadsReadAtOnce) {
+  const size_t count = 3 * kPerSpill;
+  const LinkRecords r = make(count);
+  ASSERT_EQ(r.spilled(), 3 * kPerSpill);
+  std::atomic<long> wrong{0};
+  const auto read = [&](bool backward) {
+    for (int pass = 0; pass < 4; ++pass)
+      for (size_t k = 0; k < count; ++k) {
+        const size_t i = backward ? count - 1 - k : k;
+        const double* w = r.witness(i);
+        for (int j = 0; j < kN; ++j) wrong += w[j] != value(i, j);
+      }
+  };
+  std::thread other(read, true);
+  read(false);
+  other.join();
+  EXPECT_EQ(wrong.load(), 0);
 }
 
 TEST(LinkRecords, SmallSetsStayInMemory) {
