@@ -22,14 +22,18 @@ import subprocess
 import sys
 
 
-def measure(cmd):
-    """(user+sys seconds, wall seconds, peak RSS in MB, stdout) of one run."""
+def measure(cmd, err=None):
+    """(user+sys seconds, wall seconds, peak RSS in MB, stdout) of one run; its stderr goes
+    to the file `err` if given."""
     import time
     t0 = time.monotonic()
-    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+    errf = open(err, "w") if err else subprocess.DEVNULL
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=errf)
     out = p.stdout.read()
     _, status, ru = os.wait4(p.pid, 0)
     wall = time.monotonic() - t0
+    if err:
+        errf.close()
     return ru.ru_utime + ru.ru_stime, wall, ru.ru_maxrss / 1024, out.decode(), status
 
 
@@ -49,9 +53,10 @@ def main():
         cpu, _, rss, _, st = measure([aspects, "solve", os.path.join(robots, robot + ".robot"),
                                       "--eps", eps, "--threads", threads, "--out", out, "--quiet"]
                                      + (["--compress-cert"] if zst else [])
-                                     + (["--cert-format", "3"] if v3 else []))
+                                     + (["--cert-format", "3"] if v3 else []),
+                                     err=out + ".solve.err")
         if st != 0:
-            sys.exit("solve %s failed" % case)
+            sys.exit("solve %s failed (exit status %d; its stderr: %s.solve.err)" % (case, st, out))
         cert = os.path.join(out, "aspects.cert" + (".zst" if zst else ""))
         with open(os.path.join(out, "boxes.csv")) as f:
             boxes = sum(1 for _ in f) - 1
