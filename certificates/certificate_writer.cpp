@@ -206,9 +206,7 @@ void CertificateWriter::splice_binary(TreeRecordFile& stream) {
 }
 
 std::unique_ptr<CompactTree> compact_tree(const Box& root, const Model& model, int factors) {
-  std::vector<double> ends;
-  for (const Interval& x : root) ends.insert(ends.end(), {x.lo_down(), x.hi_up()});
-  return std::make_unique<CompactTree>(ends, model.command, factors);
+  return std::make_unique<CompactTree>(compact::ends(root), model.command, factors);
 }
 
 // ---------------------------------------------------------------- TreeRecordFile
@@ -230,8 +228,8 @@ void TreeRecordFile::close() {
   if (binary_ && !trailer_) {
     trailer_ = true;
     record_.clear();
-    for (uint64_t c : {records_, leaves_})
-      for (int i = 0; i < 8; ++i) record_ += char((c >> (8 * i)) & 0xff);
+    compact::u64(record_, records_);
+    compact::u64(record_, leaves_);
     std::fwrite(record_.data(), 1, record_.size(), f_);
   }
   // A write that failed earlier (disk full) leaves only the error flag: check it too.
@@ -298,11 +296,10 @@ void TreeRecordFile::unexplored(int32_t id, const int8_t* s) {
 
 void TreeRecordFile::solution(int32_t id, const int8_t* s, const SolutionProof& proof) {
   if (compact_) {
-    std::vector<double> Q, image, weights(proof.dx);
-    for (const Interval& q : proof.existence.inflated) Q.insert(Q.end(), {q.lo_down(), q.hi_up()});
-    for (const Interval& q : proof.existence.image) image.insert(image.end(), {q.lo_down(), q.hi_up()});
+    std::vector<double> weights(proof.dx);
     weights.insert(weights.end(), proof.dq.begin(), proof.dq.end());
-    compact_->solution(s, Q, image, weights, record_);
+    compact_->solution(s, compact::ends(proof.existence.inflated),
+                       compact::ends(proof.existence.image), weights, record_);
     ++leaves_;
     return emit();
   }
@@ -361,25 +358,23 @@ void CertificateWriter::binary(const std::string& record) {
 void CertificateWriter::links(const Model& model, const AspectsResult& r) {
   const int nv = int(model.vars.size()), n = model.n();
   const LinkRecords& lp = r.link_proofs;
-  for (size_t i = 0; format_ == 2 && i < r.certified_links.size(); ++i) {
-    const NeighborPair& e = r.neighbors[r.certified_links[i]];
-    if (i >= lp.size()) throw std::logic_error("certificate: a certified link without its proof");
-    std::string shift;
-    for (int v = 0; v < nv; ++v) shift += "-0+"[e.shift(v) + 1];
-    put("K %d %d %s", e.a, e.b, shift.c_str());
-    for (int j = 0; j < n; ++j) real(lp.witness(i)[j]);
-    for (int j = 0; j < n; ++j) {
-      real(lp.inflated_lo(i, j));
-      real(lp.inflated_hi(i, j));
-    }
-    for (int k = 0; k < n * n; ++k) real(lp.C(i)[k]);
-    end_line();
-  }
-  if (format_ == 2) return;
   int32_t last_a = 0;
   for (size_t i = 0; i < r.certified_links.size(); ++i) {
     const NeighborPair& e = r.neighbors[r.certified_links[i]];
     if (i >= lp.size()) throw std::logic_error("certificate: a certified link without its proof");
+    if (format_ == 2) {
+      std::string shift;
+      for (int v = 0; v < nv; ++v) shift += "-0+"[e.shift(v) + 1];
+      put("K %d %d %s", e.a, e.b, shift.c_str());
+      for (int j = 0; j < n; ++j) real(lp.witness(i)[j]);
+      for (int j = 0; j < n; ++j) {
+        real(lp.inflated_lo(i, j));
+        real(lp.inflated_hi(i, j));
+      }
+      for (int k = 0; k < n * n; ++k) real(lp.C(i)[k]);
+      end_line();
+      continue;
+    }
     record_.assign(1, char(0xC4));
     compact::varint(record_, uint64_t(e.a - last_a));
     compact::varint(record_, uint64_t(e.b - e.a - 1));

@@ -19,10 +19,20 @@ void varint(std::string& out, uint64_t x) {
   out += char(x);
 }
 
+void u64(std::string& out, uint64_t x) {
+  for (int i = 0; i < 8; ++i) out += char((x >> (8 * i)) & 0xff);
+}
+
 void raw(std::string& out, double x) {
   uint64_t b;
   std::memcpy(&b, &x, sizeof b);
-  for (int i = 0; i < 8; ++i) out += char((b >> (8 * i)) & 0xff);
+  u64(out, b);
+}
+
+std::vector<double> ends(const Box& box) {
+  std::vector<double> out;
+  for (const Interval& x : box) out.insert(out.end(), {x.lo_down(), x.hi_up()});
+  return out;
 }
 
 void end(std::string& out, double x, double a, double b, double r, int64_t offset, int bits) {
@@ -81,10 +91,7 @@ CompactTree::Cell& CompactTree::current() {
 
 void CompactTree::end(std::string& out, double x, const double* ref, bool upper, int64_t offset,
                       int bits) {
-  const size_t before = out.size();
   compact::end(out, x, ref[0], ref[1], ref[upper], offset, bits);
-  ++ends;
-  raw_ends += out[before] == 0;
 }
 
 void CompactTree::contraction(int v, double lo, double hi, std::string& out) {

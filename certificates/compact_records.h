@@ -10,13 +10,17 @@
 #include <vector>
 
 #include "certificate_grid.h"
+#include "numerics/interval.h"
 
 namespace aspects {
 
 // Low-level coding, shared by the tree and the sections.
 namespace compact {
 void varint(std::string& out, uint64_t x);
-void raw(std::string& out, double x);  // 8 bytes, little-endian binary64
+void u64(std::string& out, uint64_t x);  // 8 bytes, little-endian
+void raw(std::string& out, double x);    // its binary64 as u64()
+// The ends of a box as lo/hi pairs of doubles, the form the coders take.
+std::vector<double> ends(const Box& box);
 // An end x on the grid of [a, b] from r (an end of it), offset by `offset` steps; its
 // 8 bytes when it is not on it.
 void end(std::string& out, double x, double a, double b, double r, int64_t offset = 0,
@@ -42,8 +46,6 @@ class CompactTree {
                 const std::vector<double>& image, const std::vector<double>& weights,
                 std::string& out);
   void deferred();  // this node is a subtree whose records are written elsewhere
-  // Ends coded by their 8 bytes, and all ends (the grid's coverage).
-  long raw_ends = 0, ends = 0;
 
  private:
   using Cell = std::vector<double>;

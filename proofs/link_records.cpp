@@ -134,8 +134,8 @@ const double* LinkRecords::record(size_t i) const {
   if (i >= spilled_) return &tail_[(i - spilled_) * stride()];
   // Windows of 1 MiB at multiples of their size: a sequential read (the certificate, the
   // index) reads each once, and a backward one does not reread a window per record. One
-  // window per thread: a shared one, refilled by another thread under a reader, gave it
-  // another window's numbers (3-RPR at eps 0.1: the index writer failed).
+  // window per thread: a shared one, refilled by another thread under a reader, gives it
+  // another window's numbers.
   struct Window {
     uint64_t serial = 0;
     size_t first = 0;

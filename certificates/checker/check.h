@@ -73,6 +73,12 @@ struct Checker {
       if (!(out[2 * j] <= out[2 * j + 1])) malformed(rec(), "interval with LO > HI");
     return out;
   }
+  // The commands' lo/hi pairs of a box (command order).
+  Box commands_of(const double* box) const {
+    Box c(2 * n);
+    for (int j = 0; j < n; ++j) put(c, j, box[2 * m.command[j]], box[2 * m.command[j] + 1]);
+    return c;
+  }
   // The next field: an index in 0..limit-1.
   long index(size_t limit) {
     const int64_t v = rd.integer();

@@ -522,7 +522,7 @@ class NeighbourSweep : public PairSweep {
  private:
   static constexpr int kMaxStrips = 1 << 16;  // so that a strip's index fits Item::strip
   // Ends as floats rounded outward: a superset of the true overlaps, which run() then
-  // tests on the boxes' doubles (32 bytes an item instead of 56).
+  // tests on the boxes' doubles (32 bytes an item, where doubles would take 56).
   struct Item {
     float lo, hi;    // on d, shifted by 2πk
     float elo, ehi;  // on e (the whole line if there is no e)

@@ -47,9 +47,7 @@ void Checker::link() {
   const double* A = R.box(a);
   std::vector<double> w(n);
   for (int j = 0; j < n; ++j) w[j] = rd.end(A[2 * m.pose[j]], A[2 * m.pose[j] + 1], false);
-  Box a_commands(2 * n);
-  for (int j = 0; j < n; ++j) put(a_commands, j, A[2 * m.command[j]], A[2 * m.command[j] + 1]);
-  const Box Q = intervals(a_commands.data(), n);
+  const Box Q = intervals(commands_of(A).data(), n);
   const std::vector<double> C = rd.reals(nn);
   Box X(2 * nv);  // the intersection, then the witness pose with its commands
   for (int v = 0; v < nv; ++v) {
@@ -57,14 +55,13 @@ void Checker::link() {
     std::tie(X[2 * v], X[2 * v + 1]) = inner(a, b, v, k[v]);
     if (!(X[2 * v] <= X[2 * v + 1])) reject("the linked boxes do not meet");
   }
-  Box commands(2 * n);
   for (int j = 0; j < n; ++j) {
     const int v = m.pose[j];
     if (!within(X[2 * v], X[2 * v + 1], w[j], w[j]))
       reject("witness outside the boxes' intersection");
     put(X, v, w[j], w[j]);
-    put(commands, j, X[2 * m.command[j]], X[2 * m.command[j] + 1]);
   }
+  const Box commands = commands_of(X.data());
   prove([=](Prover& pr) {
     pr.load(X.data());
     return unique_zero(pr, "P3", Q, C, commands, "the command is not in both boxes");

@@ -121,9 +121,8 @@ void Checker::solution_leaf(const Box& cell) {
   const size_t weights = version == 1 ? 0 : 2 * size_t(n);
   rd.count(3 + 4 * size_t(n) + 3 * nn + weights);
   const std::string_view signs = rd.word();
-  Box commands(2 * n);  // Q~ is coded against the cell's commands, IMAGE against Q~
-  for (int j = 0; j < n; ++j) put(commands, j, cell[2 * m.command[j]], cell[2 * m.command[j] + 1]);
-  const Box Q = intervals(commands.data(), n);
+  // Q~ is coded against the cell's commands, IMAGE against Q~.
+  const Box Q = intervals(commands_of(cell.data()).data(), n);
   const Box img = intervals(Q.data(), n);
   const std::vector<double> C = rd.reals(nn);
   const std::vector<double> CX = rd.reals(nn);
