@@ -426,7 +426,6 @@ int size();
 // The first rank whose executable, certificate or `options` differ from rank 0's; -1: none.
 int differing_rank(const std::string& cert, const std::string& options);
 void sum(uint64_t* v, size_t n);     // element-wise over the ranks, the result on every rank
-void lowest(uint64_t* v, size_t n);  // element-wise minimum over the ranks
 void broadcast(std::string& s, int root);
 }  // namespace ranks
 

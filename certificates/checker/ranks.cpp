@@ -88,24 +88,17 @@ int differing_rank(const std::string& cert, const std::string& options) {
     digest += std::string("\n") + (std::getenv(name) ? std::getenv(name) : "-");
   std::string ours = digest;
   broadcast(digest, 0);
-  uint64_t first[1] = {ours == digest ? uint64_t(size_) : uint64_t(rank_)};
-  lowest(first, 1);
-  return first[0] < uint64_t(size_) ? int(first[0]) : -1;
+  std::vector<uint64_t> differs(size_t(size_), 0);  // a sum of one flag a rank
+  differs[size_t(rank_)] = ours != digest;
+  sum(differs.data(), differs.size());
+  const auto first = std::find(differs.begin(), differs.end(), 1);
+  return first == differs.end() ? -1 : int(first - differs.begin());
 }
 
 void sum(uint64_t* v, size_t n) {
 #ifdef CHECK_CERT_MPI
   if (size_ > 1)
     MPI_Allreduce(MPI_IN_PLACE, v, int(n), MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
-#else
-  (void)v, (void)n;
-#endif
-}
-
-void lowest(uint64_t* v, size_t n) {
-#ifdef CHECK_CERT_MPI
-  if (size_ > 1)
-    MPI_Allreduce(MPI_IN_PLACE, v, int(n), MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
 #else
   (void)v, (void)n;
 #endif
