@@ -36,6 +36,15 @@ rpr --free-ingest --deeper 3 $grow --scenario ", scheduler alone, cut +3" --poin
 rrr --free-ingest --deeper 3 --scenario ", scheduler alone, cut +3" --points-out "$work/rrr_deeper.json"
 echo "## eps 0.1 grown uniformly, the scheduler alone, cut +3"
 rpr --free-ingest --deeper 3 $uniform --scenario " (uniform), scheduler alone, cut +3" | sed -n '/extrapolated/,$p'
+# Format 3 (--cert-format 3): the records a rank sends are binary, the certificate's bytes
+# per box processed: 326,929,317 / 21,881,467 = 14.9 at eps 0.3 and 4,381,326,730 /
+# 232,703,589 = 18.8 at eps 0.1 (bench/RESULTS.md, "Certificate format 3, built").
+v3="--records-per-node 14.9"
+e01v3=$(echo "$e01" | sed 's/--extra-records-per-node 207/--extra-records-per-node 18.8/')
+echo "## Format 3 records, as built (cut at 8 subtrees a rank)"
+rpr $v3 --grow-from bench/scaling/3rpr_eps0.6_cut14.csv.gz $e01v3 --scenario " (format 3)"
+echo "## Format 3 records, cut +3"
+rpr $v3 --deeper 3 --grow-from bench/scaling/3rpr_eps0.6_cut14.csv.gz $e01v3 --scenario " (format 3), cut +3"
 echo "## No certificate (--no-cert: only the parts reach rank 0), cut +3"
 rpr --no-cert --deeper 3 $grow --scenario ", no cert, cut +3"
 replay --plot-points "$work"/rpr_asbuilt.json "$work"/rpr_free.json "$work"/rpr_deeper.json \
