@@ -18,8 +18,10 @@ rrr() { replay --stats bench/scaling/3rrr_eps1_cut14.csv.gz \
 # measured at eps 0.1 (232,025,457 processed), with the later phases measured there
 # (1,049.8 s: solver 3,315.6 s - search 2,711.8 s + outputs 446.0 s) and 207 record bytes
 # per box (48 GB of records); "uniform": every subtree grown alike (the shape of eps 0.3).
-e01="--eps 0.3 --eps-coarse 0.6 --eps-target 0.1 --target-nodes 232025457 --later-seconds 1049.8 --extra-records-per-node 207"
-grow="--grow-from bench/scaling/3rpr_eps0.6_cut14.csv.gz $e01"
+e01_shape="--eps 0.3 --eps-coarse 0.6 --eps-target 0.1 --target-nodes 232025457 --later-seconds 1049.8"
+e01="$e01_shape --extra-records-per-node 207"
+grow_from="--grow-from bench/scaling/3rpr_eps0.6_cut14.csv.gz"
+grow="$grow_from $e01"
 uniform="--grow-from bench/scaling/3rpr_eps0.3_cut14.csv.gz $e01"
 records="--records-per-node 191"  # measured on 3-RPR eps 0.3 (the records' files)
 
@@ -39,12 +41,11 @@ rpr --free-ingest --deeper 3 $uniform --scenario " (uniform), scheduler alone, c
 # Format 3 (--cert-format 3): the records a rank sends are binary, the certificate's bytes
 # per box processed: 326,929,317 / 21,881,467 = 14.9 at eps 0.3 and 4,381,326,730 /
 # 232,703,589 = 18.8 at eps 0.1 (bench/RESULTS.md, "Certificate format 3, built").
-v3="--records-per-node 14.9"
-e01v3=$(echo "$e01" | sed 's/--extra-records-per-node 207/--extra-records-per-node 18.8/')
+grow_v3="--records-per-node 14.9 $grow_from $e01_shape --extra-records-per-node 18.8"
 echo "## Format 3 records, as built (cut at 8 subtrees a rank)"
-rpr $v3 --grow-from bench/scaling/3rpr_eps0.6_cut14.csv.gz $e01v3 --scenario " (format 3)"
+rpr $grow_v3 --scenario " (format 3)"
 echo "## Format 3 records, cut +3"
-rpr $v3 --deeper 3 --grow-from bench/scaling/3rpr_eps0.6_cut14.csv.gz $e01v3 --scenario " (format 3), cut +3"
+rpr --deeper 3 $grow_v3 --scenario " (format 3), cut +3"
 echo "## No certificate (--no-cert: only the parts reach rank 0), cut +3"
 rpr --no-cert --deeper 3 $grow --scenario ", no cert, cut +3"
 replay --plot-points "$work"/rpr_asbuilt.json "$work"/rpr_free.json "$work"/rpr_deeper.json \
