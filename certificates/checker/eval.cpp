@@ -40,9 +40,13 @@ struct Evaluator::Balls {
   // F := fn's ball f rounded outward, G := its ball g (when given).
   template <class Fn>
   void compute(const Ival& a, End e, Fn fn, Ival& F, Ival* G) {
-    get_end(m, a, e);
-    arf_set_mpfr(end, m);
-    arb_set_arf(x, end);
+    if (Ival::doubles) {
+      arb_set_d(x, e == Lo ? a.lo() : a.hi());  // exact, without an MPFR number between
+    } else {
+      get_end(m, a, e);
+      arf_set_mpfr(end, m);
+      arb_set_arf(x, end);
+    }
     for (slong prec = p + 9;; prec *= 2) {
       fn(prec);
       get(f, F);
@@ -52,12 +56,16 @@ struct Evaluator::Balls {
   }
   // out := the ball b rounded outward; the entire line if b is not finite.
   void get(const arb_t b, Ival& out) {
-    arb_get_lbound_arf(end, b, 2 * p);
-    arf_get_mpfr(m, end, MPFR_RNDD);
-    set_end(out, Lo, m);
-    arb_get_ubound_arf(end, b, 2 * p);
-    arf_get_mpfr(m, end, MPFR_RNDU);
-    set_end(out, Hi, m);
+    for (End e : {Lo, Hi}) {
+      if (e == Lo) arb_get_lbound_arf(end, b, 2 * p);
+      else arb_get_ubound_arf(end, b, 2 * p);
+      if (Ival::doubles) {  // Arb's directed rounding to a double: MPFR's end, cheaper
+        out.set_end(e, arf_get_d(end, e == Lo ? ARF_RND_FLOOR : ARF_RND_CEIL));
+      } else {
+        arf_get_mpfr(m, end, e == Lo ? MPFR_RNDD : MPFR_RNDU);
+        set_end(out, e, m);
+      }
+    }
     if (out.nan()) out.entire();
   }
 };

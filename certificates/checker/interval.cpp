@@ -100,22 +100,41 @@ void by_mpfi(Ival& r, const Ival& a, const Ival* b, F f) {
   from_mpfi(r, s.r);
 }
 
-// [min, max] of the four products (or quotients) of the ends, each rounded outward; false
-// when a residual cannot tell the rounding.
+// r := [op(xl, yl), op(xh, yh)], each rounded outward; false when a residual cannot tell the
+// rounding.
 template <class Op, class Err>
-bool corners(Ival& r, const Ival& a, const Ival& b, Op op, Err err) {
-  double lo = INFINITY, hi = -INFINITY;
-  for (double x : {a.l, a.h})
-    for (double y : {b.l, b.h}) {
-      const double z = op(x, y);
-      int e = 0;
-      if (!err(x, y, z, e)) return false;
-      lo = std::min(lo, down(z, e));
-      hi = std::max(hi, up(z, e));
-    }
-  r.l = lo;
-  r.h = hi;
+bool ends(Ival& r, double xl, double yl, double xh, double yh, Op op, Err err) {
+  const double zl = op(xl, yl), zh = op(xh, yh);
+  int el = 0, eh = 0;
+  if (!err(xl, yl, zl, el) || !err(xh, yh, zh, eh)) return false;
+  r.l = down(zl, el);
+  r.h = up(zh, eh);
   return true;
+}
+
+// a·b from the corners the signs select (the usual nine cases): one product an end unless
+// both straddle 0. Each end is the least (greatest) corner rounded down (up).
+bool product(Ival& r, const Ival& a, const Ival& b) {
+  auto op = [](double x, double y) { return x * y; };
+  if (a.l >= 0)
+    return ends(r, b.l >= 0 ? a.l : a.h, b.l, b.h <= 0 ? a.l : a.h, b.h, op, product_err);
+  if (a.h <= 0)
+    return ends(r, b.h <= 0 ? a.h : a.l, b.h, b.l >= 0 ? a.h : a.l, b.l, op, product_err);
+  if (b.l >= 0) return ends(r, a.l, b.h, a.h, b.h, op, product_err);  // a straddles 0
+  if (b.h <= 0) return ends(r, a.h, b.l, a.l, b.l, op, product_err);
+  Ival p, q;  // both straddle 0: lo is a.l·b.h or a.h·b.l, hi a.l·b.l or a.h·b.h
+  if (!ends(p, a.l, b.h, a.l, b.l, op, product_err)) return false;
+  if (!ends(q, a.h, b.l, a.h, b.h, op, product_err)) return false;
+  r.l = std::min(p.l, q.l);
+  r.h = std::max(p.h, q.h);
+  return true;
+}
+
+// a/b for b > 0 or b < 0, from the two corners the signs select.
+bool quotient(Ival& r, const Ival& a, const Ival& b) {
+  const double nl = b.l > 0 ? a.l : a.h, nh = b.l > 0 ? a.h : a.l;  // the ends' numerators
+  auto op = [](double x, double y) { return x / y; };
+  return ends(r, nl, nl >= 0 ? b.h : b.l, nh, nh >= 0 ? b.l : b.h, op, quotient_err);
 }
 
 }  // namespace
@@ -128,11 +147,6 @@ Ival::Ival(const Ival& o) : l(o.l), h(o.h) {
   if (doubles) return;
   mpfi_init2(v, mpfi_get_prec(o.v));
   mpfi_set(v, o.v);
-}
-Ival& Ival::operator=(const Ival& o) {
-  if (doubles) l = o.l, h = o.h;
-  else if (this != &o) mpfi_set(v, o.v);
-  return *this;
 }
 Ival::~Ival() {
   if (!doubles) mpfi_clear(v);
@@ -173,10 +187,6 @@ static double dend(const Ival& x, End e) { return e == Lo ? x.l : x.h; }
 bool less(const Ival& x, End ex, const Ival& y, End ey) {
   if (Ival::doubles) return dend(x, ex) < dend(y, ey);
   return mpfr_less_p(end_of(x, ex), end_of(y, ey));
-}
-bool same(const Ival& x, End ex, const Ival& y, End ey) {
-  if (Ival::doubles) return dend(x, ex) == dend(y, ey);
-  return mpfr_equal_p(end_of(x, ex), end_of(y, ey));
 }
 int cmp(const Ival& x, End e, double d) {
   if (Ival::doubles) return sgn(dend(x, e) - d) * !std::isnan(dend(x, e));
@@ -232,15 +242,12 @@ void sub(Ival& r, const Ival& a, const Ival& b) {
 }
 
 void mul(Ival& r, const Ival& a, const Ival& b) {
-  if (Ival::doubles && proper(a) && proper(b) &&
-      corners(r, a, b, [](double x, double y) { return x * y; }, product_err))
-    return;
+  if (Ival::doubles && proper(a) && proper(b) && product(r, a, b)) return;
   by_mpfi(r, a, &b, [](mpfi_ptr z, mpfi_srcptr x, mpfi_srcptr y) { mpfi_mul(z, x, y); });
 }
 
 void div(Ival& r, const Ival& a, const Ival& b) {
-  if (Ival::doubles && proper(a) && proper(b) && (b.l > 0 || b.h < 0) &&
-      corners(r, a, b, [](double x, double y) { return x / y; }, quotient_err))
+  if (Ival::doubles && proper(a) && proper(b) && (b.l > 0 || b.h < 0) && quotient(r, a, b))
     return;
   by_mpfi(r, a, &b, [](mpfi_ptr z, mpfi_srcptr x, mpfi_srcptr y) { mpfi_div(z, x, y); });
 }

@@ -26,7 +26,11 @@ class Ival {
  public:
   Ival();  // NaN ends, as MPFI initialises them
   Ival(const Ival& o);
-  Ival& operator=(const Ival& o);
+  Ival& operator=(const Ival& o) {  // inline: the evaluator copies a value per node
+    if (doubles) l = o.l, h = o.h;
+    else if (this != &o) mpfi_set(v, o.v);
+    return *this;
+  }
   ~Ival();
 
   // The ends as doubles rounded outward (lo down, hi up); exact at 53 bits.
@@ -53,7 +57,10 @@ class Ival {
 
 // Exact comparisons of ends; false when either is NaN.
 bool less(const Ival& x, End ex, const Ival& y, End ey);
-bool same(const Ival& x, End ex, const Ival& y, End ey);
+inline bool same(const Ival& x, End ex, const Ival& y, End ey) {  // inline: the caches' test
+  if (Ival::doubles) return (ex == Lo ? x.l : x.h) == (ey == Lo ? y.l : y.h);
+  return mpfr_equal_p(ex == Lo ? &x.v->left : &x.v->right, ey == Lo ? &y.v->left : &y.v->right);
+}
 int cmp(const Ival& x, End e, double d);  // as mpfr_cmp_d: 0 when NaN
 // dst's end ed := src's end es, exactly; point: both ends of dst := src's end es.
 void copy_end(Ival& dst, End ed, const Ival& src, End es);
