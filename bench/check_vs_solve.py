@@ -46,6 +46,7 @@ def main():
         " check %d: CPU s, ratio, wall s, RSS MB |" % (i + 1) for i in range(len(checkers)))
     print(head)
     print("|---" * (6 + len(checkers)) + "|")
+    os.makedirs(outdir, exist_ok=True)  # each solve's stderr is kept beside its output
     for case in cases:
         robot, eps, *flags = case.split(":")
         zst, v3 = "zst" in flags, "v3" in flags
