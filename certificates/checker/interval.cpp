@@ -259,13 +259,9 @@ void add_d(Ival& r, const Ival& a, double d) {
 }
 
 void mul_d(Ival& r, const Ival& a, double d) {  // the preconditioners' products: two corners
-  int el = 0, eh = 0;
-  const double x = a.l * d, y = a.h * d;
-  if (Ival::doubles && proper(a) && product_err(a.l, d, x, el) && product_err(a.h, d, y, eh)) {
-    r.l = std::min(down(x, el), down(y, eh));
-    r.h = std::max(up(x, el), up(y, eh));
-    return;
-  }
+  auto op = [](double x, double y) { return x * y; };
+  const double xl = d >= 0 ? a.l : a.h, xh = d >= 0 ? a.h : a.l;
+  if (Ival::doubles && proper(a) && ends(r, xl, d, xh, d, op, product_err)) return;
   Ival t;
   t.set(d, d);
   mul(r, a, t);
