@@ -35,6 +35,10 @@ void check(int rc, const char* what) {
   if (rc != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
 }
 
+MPI_Comm communicator(void* bulk, MpiJob::Channel c) {
+  return c == MpiJob::Bulk ? *static_cast<MPI_Comm*>(bulk) : MPI_COMM_WORLD;
+}
+
 }  // namespace
 
 MpiJob::MpiJob() {
@@ -47,16 +51,25 @@ MpiJob::MpiJob() {
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  auto* bulk = new MPI_Comm;
+  check(MPI_Comm_dup(MPI_COMM_WORLD, bulk), "MPI_Comm_dup");
+  bulk_ = bulk;
 }
 
-MpiJob::~MpiJob() { MPI_Finalize(); }
+MpiJob::~MpiJob() {
+  auto* bulk = static_cast<MPI_Comm*>(bulk_);
+  MPI_Comm_free(bulk);
+  delete bulk;
+  MPI_Finalize();
+}
 
-void MpiJob::send(int to, int tag, const std::string& bytes) {
+void MpiJob::send(int to, int tag, const std::string& bytes, Channel c) {
+  const MPI_Comm comm = communicator(bulk_, c);
   auto send_piece = [&](const void* p, size_t n) {
     MPI_Request req;
     {
       std::lock_guard<std::mutex> g(lock_);
-      check(MPI_Isend(p, int(n), MPI_BYTE, to, tag, MPI_COMM_WORLD, &req), "MPI_Isend");
+      check(MPI_Isend(p, int(n), MPI_BYTE, to, tag, comm, &req), "MPI_Isend");
     }
     poll(lock_, [&] {
       int done = 0;
@@ -72,12 +85,13 @@ void MpiJob::send(int to, int tag, const std::string& bytes) {
     send_piece(bytes.data() + at, std::min(kPiece, bytes.size() - at));
 }
 
-std::string MpiJob::receive(int from, int tag, int* sender, int* found_tag) {
+std::string MpiJob::receive(int from, int tag, int* sender, int* found_tag, Channel c) {
+  const MPI_Comm comm = communicator(bulk_, c);
   MPI_Status status;
   poll(lock_, [&] {
     int flag = 0;
     check(MPI_Iprobe(from == kAny ? MPI_ANY_SOURCE : from, tag == kAny ? MPI_ANY_TAG : tag,
-                     MPI_COMM_WORLD, &flag, &status),
+                     comm, &flag, &status),
           "MPI_Iprobe");
     return flag != 0;
   });
@@ -87,7 +101,7 @@ std::string MpiJob::receive(int from, int tag, int* sender, int* found_tag) {
     MPI_Request req;
     {
       std::lock_guard<std::mutex> g(lock_);
-      check(MPI_Irecv(p, int(n), MPI_BYTE, src, t, MPI_COMM_WORLD, &req), "MPI_Irecv");
+      check(MPI_Irecv(p, int(n), MPI_BYTE, src, t, comm, &req), "MPI_Irecv");
     }
     poll(lock_, [&] {
       int done = 0;
@@ -112,12 +126,13 @@ std::string MpiJob::receive(int from, int tag, int* sender, int* found_tag) {
   return bytes;
 }
 
-bool MpiJob::probe(int from, int tag) {
+bool MpiJob::probe(int from, int tag, Channel c) {
+  const MPI_Comm comm = communicator(bulk_, c);
   std::lock_guard<std::mutex> g(lock_);
   int flag = 0;
   MPI_Status status;
   check(MPI_Iprobe(from == kAny ? MPI_ANY_SOURCE : from, tag == kAny ? MPI_ANY_TAG : tag,
-                   MPI_COMM_WORLD, &flag, &status),
+                   comm, &flag, &status),
         "MPI_Iprobe");
   return flag != 0;
 }

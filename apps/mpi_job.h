@@ -3,7 +3,8 @@
 // to complete polls and sleeps (20 µs growing to 1 ms) instead of blocking: Open MPI's
 // blocking calls spin, and on a rank that also searches a spinning thread takes a core
 // from the search. MPI is called by one thread at a time (MPI_THREAD_SERIALIZED): threads
-// that share the job go through its lock.
+// that share the job go through its lock. Two channels (communicators) keep a rank's small
+// requests apart from the large parts it sends back: rank 0 answers requests first.
 #pragma once
 
 #include <mutex>
@@ -23,8 +24,10 @@ enum class WorkerState {
 class MpiJob {
  public:
   static constexpr int kAny = -1;  // any source, or any tag
+  // Control: requests, tasks, stops, exit statuses. Bulk: the parts searched (MB each).
+  enum Channel { Control, Bulk };
 
-  MpiJob();   // MPI_Init_thread; throws if MPI cannot be called from several threads
+  MpiJob();   // MPI_Init_thread (throws if MPI cannot be called from several threads)
   ~MpiJob();  // MPI_Finalize
   MpiJob(const MpiJob&) = delete;
   MpiJob& operator=(const MpiJob&) = delete;
@@ -35,11 +38,12 @@ class MpiJob {
   int ranks_on_this_node() const;
 
   // Returns once `bytes` are sent (the buffer reusable).
-  void send(int to, int tag, const std::string& bytes);
+  void send(int to, int tag, const std::string& bytes, Channel c = Control);
   // The next message from `from` with `tag` (kAny: any); its sender and tag when asked.
-  std::string receive(int from, int tag, int* sender = nullptr, int* found_tag = nullptr);
+  std::string receive(int from, int tag, int* sender = nullptr, int* found_tag = nullptr,
+                      Channel c = Control);
   // Whether a message from `from` with `tag` (kAny: any) waits to be received; does not wait.
-  bool probe(int from, int tag);
+  bool probe(int from, int tag, Channel c = Control);
 
   // Every rank's `mine` (all of one size) on rank 0, in rank order; empty elsewhere.
   std::vector<std::string> gather(const std::string& mine);
@@ -59,6 +63,7 @@ class MpiJob {
 
  private:
   int rank_ = 0, size_ = 1;
+  void* bulk_ = nullptr;  // the Bulk channel's communicator (MPI_Comm, kept out of this header)
   WorkerState workers_ = WorkerState::Idle;
   std::mutex lock_;
 };

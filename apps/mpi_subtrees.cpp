@@ -6,11 +6,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #include "certificate_writer.h"
 #include "model/determinant_factors.h"
@@ -29,7 +32,8 @@ constexpr int kStop = 13;
 constexpr int kFromThread = 1000;
 constexpr int kToThread = 3000;
 constexpr int kMaxThreads = 1024;  // --threads' limit
-constexpr uint8_t kReady = 0, kSearched = 1, kStopped = 2;
+constexpr uint8_t kReady = 0, kDone = 1;        // requests
+constexpr uint8_t kComplete = 1, kStopped = 2;  // parts
 
 std::string task_message(int32_t task, const std::vector<DeferredSubtree>& deferred) {
   MessageWriter w;
@@ -73,8 +77,10 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "
               << job_.size() << " processes: some will have nothing to search (fewer "
               << "processes, or a smaller --eps, keeps them busy)\n";
-  // The subtree each (rank, thread) is searching: a part must answer the task it was given.
+  // The subtree each (rank, thread) was given last, which its next request must name.
   std::map<std::pair<int, int>, int32_t> given;
+  // The subtrees given whose parts have not come back yet: a part must answer one of them.
+  std::set<std::tuple<int, int, int32_t>> owed;
   // Once this process stops, the ranks searching a subtree are told to stop it (the others
   // get no more subtrees).
   bool told = false;
@@ -85,42 +91,58 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
       if (searching[r]) job_.send(r, kStop, std::string());
     told = true;
   };
-  int done = 0;
-  auto pause = std::chrono::microseconds(20);
-  while (done < job_.size() - 1) {
-    if (!told && stopped()) tell_stop();
-    if (!job_.probe(MpiJob::kAny, MpiJob::kAny)) {
-      std::this_thread::sleep_for(pause);
-      pause = std::min(pause * 2, std::chrono::microseconds(1000));
-      continue;
-    }
-    pause = std::chrono::microseconds(20);
+  // Requests first: a rank's thread waits for its next subtree, not for its part's intake.
+  auto answer_request = [&] {
     int sender = 0, tag = 0;
     const std::string msg = job_.receive(MpiJob::kAny, MpiJob::kAny, &sender, &tag);
-    if (tag == kRankDone) {
-      ++done;
-      continue;
-    }
+    if (tag == kRankDone) return true;
     const int thread = tag - kFromThread;
     MessageReader in(msg, sender);
     if (thread < 0 || thread >= kMaxThreads) in.fail("unexpected tag " + std::to_string(tag));
     const uint8_t kind = in.u8();
     auto it = given.find({sender, thread});
-    if (kind == kSearched || kind == kStopped) {
-      const int32_t task = in.i32();
-      if (it == given.end() || it->second != task) in.fail("a subtree it was not given");
-      SearchPart part;
-      read_search_part(in, part, uint32_t(nv_), uint32_t(factors), 0);
-      std::string records = in.bytes(in.u64());
-      if (!in.at_end()) in.fail("trailing bytes");
-      returned(task, kind == kSearched ? PartOutcome::Complete : PartOutcome::Stopped,
-               std::move(part), std::move(records));
+    if (kind == kDone) {
+      if (it == given.end() || it->second != in.i32()) in.fail("a subtree it was not given");
     } else if (kind != kReady || it != given.end()) {
       in.fail("unexpected message");
     }
+    if (!in.at_end()) in.fail("trailing bytes");
     const int32_t next = stopped() ? -1 : queue.claim();
     given[{sender, thread}] = next;
+    if (next >= 0) owed.insert({sender, thread, next});
     job_.send(sender, kToThread + thread, task_message(next, deferred));
+    return false;
+  };
+  auto take_part = [&] {
+    int sender = 0, tag = 0;
+    const std::string msg =
+        job_.receive(MpiJob::kAny, MpiJob::kAny, &sender, &tag, MpiJob::Bulk);
+    MessageReader in(msg, sender);
+    const uint8_t kind = in.u8();
+    if (kind != kComplete && kind != kStopped) in.fail("unexpected part");
+    const int32_t task = in.i32();
+    if (owed.erase({sender, tag - kFromThread, task}) != 1) in.fail("a subtree it was not given");
+    SearchPart part;
+    read_search_part(in, part, uint32_t(nv_), uint32_t(factors), 0);
+    std::string records = in.bytes(in.u64());
+    if (!in.at_end()) in.fail("trailing bytes");
+    returned(task, kind == kComplete ? PartOutcome::Complete : PartOutcome::Stopped,
+             std::move(part), std::move(records));
+  };
+  int done = 0;
+  auto pause = std::chrono::microseconds(20);
+  while (done < job_.size() - 1 || !owed.empty()) {
+    if (!told && stopped()) tell_stop();
+    if (job_.probe(MpiJob::kAny, MpiJob::kAny)) {
+      done += answer_request();
+    } else if (job_.probe(MpiJob::kAny, MpiJob::kAny, MpiJob::Bulk)) {
+      take_part();
+    } else {
+      std::this_thread::sleep_for(pause);
+      pause = std::min(pause * 2, std::chrono::microseconds(1000));
+      continue;
+    }
+    pause = std::chrono::microseconds(20);
   }
   job_.set_workers(WorkerState::Waiting);
 }
@@ -139,6 +161,7 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
       set_working_precision(prec);  // MPFR's default precision is per thread
       MessageWriter reply;
       reply.u8(kReady);
+      std::future<void> sending;  // the last part's send
       for (;;) {
         job.send(0, kFromThread + thread, reply.s);
         const std::string msg = job.receive(0, kToThread + thread);
@@ -167,13 +190,23 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
         } else {
           complete = search_subtree(model, config, factors, subtree, part, nullptr);
         }
+        MessageWriter out;
+        out.u8(complete ? kComplete : kStopped);
+        out.i32(task);
+        write_search_part(out, part, uint32_t(factors.size()));
+        out.u64(records.size());
+        out.bytes(records.data(), records.size());
+        // The part travels while this thread searches its next subtree; one at a time, so
+        // that a rank 0 slow to take parts in holds the thread back.
+        if (sending.valid()) sending.get();
+        sending = std::async(std::launch::async, [&job, thread, m = std::move(out.s)] {
+          job.send(0, kFromThread + thread, m, MpiJob::Bulk);
+        });
         reply = MessageWriter();
-        reply.u8(complete ? kSearched : kStopped);
+        reply.u8(kDone);
         reply.i32(task);
-        write_search_part(reply, part, uint32_t(factors.size()));
-        reply.u64(records.size());
-        reply.bytes(records.data(), records.size());
       }
+      if (sending.valid()) sending.get();
     }, tbb::simple_partitioner());
   });
   job.send(0, kRankDone, std::string());

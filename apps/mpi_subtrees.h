@@ -5,8 +5,11 @@
 // records. Parts travel in messages, not files: the ranks need no shared filesystem.
 //
 // Messages (little-endian; apps/mpi_job.h sends byte strings of any length):
-//   thread s of a rank -> rank 0, tag kFromThread + s:
+//   thread s of a rank -> rank 0, Control channel, tag kFromThread + s:
 //     u8 0                                       (ready for a first subtree)
+//     u8 1  i32 task                             (done with task: give me the next)
+//   thread s of a rank -> rank 0, Bulk channel, tag kFromThread + s, sent while the thread
+//   searches its next subtree (one part of a thread in flight at a time):
 //     u8 1  i32 task  part  u64 R  R bytes       (task searched: part as in
 //                                                 apps/search_part_codec.h, its records)
 //     u8 2  i32 task  part  u64 R  R bytes       (task stopped: a partial part)
@@ -14,7 +17,10 @@
 //     i32 task  i32 parent_split  nv × (f64 lo  f64 hi)   (search this)
 //     i32 -1                                              (no more: the thread ends)
 //   rank 0 -> a rank searching a subtree, tag kStop: empty (rank 0 stopped: stop searching)
-//   a rank -> rank 0, tag kRankDone: empty (all its threads have ended)
+//   a rank -> rank 0, tag kRankDone: empty (all its threads have ended, their parts sent)
+// Rank 0 answers requests before it takes a part in: a thread waits for its next subtree
+// only as long as a request takes, not behind the parts of the whole job (the replay of
+// 3-RPR at eps 0.1: bench/RESULTS.md, "Issue 30, fourth slice").
 #pragma once
 
 #include "model/model.h"
