@@ -21,7 +21,7 @@ namespace aspects {
 namespace {
 
 // Layout (integers and doubles little-endian; a string is a u64 length and its bytes):
-//   "aspects-checkpoint 1\n"
+//   "aspects-checkpoint 2\n"  (1: parts in fixed-width fields)
 //   str version  str model_sha256  str model_text  str model_file  f64 eps  f64 tau
 //   i64 precision  str bisect  u8 all_links  u8 no_cert  i32 defer_depth
 //   f64 checkpoint_seconds  u32 nv  u32 p
@@ -31,7 +31,7 @@ namespace {
 //     D × (u8 done; when 1: part  str records)
 //   32 bytes: SHA-256 of everything before
 // part: apps/search_part_codec.h
-const char kMagic[] = "aspects-checkpoint 1\n";
+const char kMagic[] = "aspects-checkpoint 2\n";
 constexpr size_t kDigest = 32;
 
 class Sha256 {

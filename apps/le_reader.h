@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <string_view>
 
 namespace aspects {
 
@@ -46,6 +47,13 @@ class LeReader {
     if (left() < n || b_.compare(pos_, n, s) != 0) return false;
     pos_ += n;
     return true;
+  }
+  // The next n bytes, in place (valid while the string read is).
+  std::string_view view(uint64_t n) {
+    need(n);
+    std::string_view v(b_.data() + pos_, n);
+    pos_ += n;
+    return v;
   }
   // n bytes as a string (n already bounded by the caller).
   std::string bytes(uint64_t n) {

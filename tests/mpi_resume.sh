@@ -66,7 +66,7 @@ depth() {
   /usr/bin/python3 - "$1/checkpoint" <<'PY'
 import struct, sys
 b = open(sys.argv[1], "rb").read()
-at = len(b"aspects-checkpoint 1\n")
+at = len(b"aspects-checkpoint 2\n")
 def skip_str():
     global at
     (n,) = struct.unpack_from("<Q", b, at)
