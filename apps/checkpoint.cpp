@@ -148,8 +148,16 @@ Checkpoint read_checkpoint(const std::string& path) {
                                  "--checkpoint SECONDS --out DIR?)");
   std::string b((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   const size_t magic = std::strlen(kMagic);
-  if (b.size() < magic || b.compare(0, magic, kMagic) != 0)
-    throw CheckpointError(path + ": not an aspects checkpoint (or another format version)");
+  if (b.size() < magic || b.compare(0, magic, kMagic) != 0) {
+    const size_t name = std::strlen("aspects-checkpoint ");
+    const size_t eol = b.find('\n');
+    if (b.compare(0, name, kMagic, name) == 0 && eol != std::string::npos && eol < 32)
+      throw CheckpointError(path + ": an aspects checkpoint of format " +
+                            b.substr(name, eol - name) + "; this version reads format " +
+                            std::string(kMagic + name, magic - name - 1) +
+                            ": resume it with the version that wrote it");
+    throw CheckpointError(path + ": not an aspects checkpoint");
+  }
   if (b.size() < magic + kDigest)
     throw CheckpointError(path + ": damaged checkpoint (truncated): refused, and left as it is");
   const size_t end = b.size() - kDigest;

@@ -294,6 +294,10 @@ def case_checkpoint_refused():
     refused([], "damaged checkpoint (checksum", good[: len(good) // 2])          # truncated
     refused([], "damaged checkpoint (checksum", good[:100] + bytes([good[100] ^ 1]) + good[101:])
     refused([], "damaged", good[:30])
+    # A checkpoint of the first format (parts in fixed-width fields) names its format.
+    refused([], "an aspects checkpoint of format 1; this version reads format 2",
+            good.replace(b"aspects-checkpoint 2\n", b"aspects-checkpoint 1\n", 1))
+    refused([], "not an aspects checkpoint", b"x" + good[1:])
     # The good one, put back, still resumes to the uninterrupted result; the model, eps and
     # precision given again and equal are accepted.
     open(path, "wb").write(good)
