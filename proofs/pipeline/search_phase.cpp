@@ -230,20 +230,29 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
   if (config.remote) {
     search_with_remote(model, config, factors, st, stats, tick, parallel, checkpoints);
   } else {
-    std::vector<TreeSink*> sinks(st.deferred.size(), nullptr);
-    for (size_t k = 0; k < st.deferred.size(); ++k)
-      if (!st.done[k] && cert) sinks[k] = cert->subtree(int32_t(k), st.deferred[k].box);
+    // A sink is opened when its subtree is taken, as in search_with_remote: a file each,
+    // and --cut-depth 16 makes 65,536 subtrees (seen failing: "cannot write" when they
+    // were all opened first, past the limit on open files).
+    std::mutex cert_lock;  // the writer's list of subtrees grows; a checkpoint reads it
     parallel.arena().execute([&] {
       tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
         if (st.done[k]) return;
         set_working_precision(prec);  // MPFR's default precision is per thread
+        TreeSink* sink = nullptr;
+        if (cert) {
+          std::lock_guard<std::mutex> g(cert_lock);
+          sink = cert->subtree(int32_t(k), st.deferred[k].box);
+        }
         PartClock clock;
         if (search_part(model, config, factors, st.deferred[k].box, st.deferred[k].parent_split,
-                        st.parts[k], sinks[k], stats, tick, -1, nullptr))
+                        st.parts[k], sink, stats, tick, -1, nullptr))
           checkpoints.mark_done(k);
         if (config.subtree_observer.searched_here)
           config.subtree_observer.searched_here(int32_t(k), st.parts[k], clock.work());
-        if (config.checkpoint_seconds > 0) checkpoints.write(false);
+        if (config.checkpoint_seconds > 0) {
+          std::lock_guard<std::mutex> g(cert_lock);
+          checkpoints.write(false);
+        }
       }, tbb::simple_partitioner());
     });
   }
