@@ -133,7 +133,10 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
     for (size_t k = 0; k < st.deferred.size(); ++k) {
       o.u8(done[k]);
       if (!done[k]) continue;
-      write_search_part(o, st.parts[k], h.p);
+      if (k < st.encoded.size() && !st.encoded[k].empty())  // as another rank encoded it
+        o.bytes(st.encoded[k].data(), st.encoded[k].size());
+      else
+        write_search_part(o, st.parts[k], h.p);
       o.str(cert ? cert->records(int32_t(k)) : std::string());
     }
   }

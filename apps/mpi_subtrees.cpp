@@ -71,12 +71,13 @@ int defer_depth_for(int processes, int threads) {
 }
 
 void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
-                             int factors, const std::function<bool()>& stopped,
+                             int /*factors: read at decode()*/, const std::function<bool()>& stopped,
                              const Returned& returned) {
   if (deferred.size() < size_t(job_.size()) && !stopped())  // a stopped top left the rest
     std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "
               << job_.size() << " processes: some will have nothing to search (fewer "
               << "processes, or a smaller --eps, keeps them busy)\n";
+  source_.assign(deferred.size(), -1);
   // The subtree each (rank, thread) was given last, which its next request must name.
   std::map<std::pair<int, int>, int32_t> given;
   // The subtrees given whose parts have not come back yet: a part must answer one of them.
@@ -113,6 +114,7 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     job_.send(sender, kToThread + thread, task_message(next, deferred));
     return false;
   };
+  // Kept as the bytes it came in: decode() reads it at the merge, on all threads.
   auto take_part = [&] {
     int sender = 0, tag = 0;
     const std::string msg =
@@ -122,10 +124,17 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     if (kind != kComplete && kind != kStopped) in.fail("unexpected part");
     const int32_t task = in.i32();
     if (owed.erase({sender, tag - kFromThread, task}) != 1) in.fail("a subtree it was not given");
-    SearchPart part;
-    read_search_part(in, part, uint32_t(nv_), uint32_t(factors), 0);
+    ReturnedPart part;
+    for (long* x : {&part.nodes, &part.solutions, &part.undecided, &part.discarded})
+      *x = long(in.i64());
+    const uint64_t part_bytes = in.u64();
+    if (part_bytes > in.left()) in.fail("truncated");
+    part.bytes.reserve(8 + part_bytes);
+    part.bytes.append(msg, in.pos() - 8, 8 + part_bytes);  // its length, then its bytes
+    in.view(part_bytes);
     std::string records = in.bytes(in.u64());
     if (!in.at_end()) in.fail("trailing bytes");
+    source_.at(size_t(task)) = sender;
     returned(task, kind == kComplete ? PartOutcome::Complete : PartOutcome::Stopped,
              std::move(part), std::move(records));
   };
@@ -145,6 +154,13 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     pause = std::chrono::microseconds(20);
   }
   job_.set_workers(WorkerState::Waiting);
+}
+
+void MpiSubtreeServer::decode(int32_t task, const std::string& bytes, int factors,
+                              SearchPart& part) const {
+  MessageReader in(bytes, source_.at(size_t(task)));
+  read_search_part(in, part, uint32_t(nv_), uint32_t(factors), 0);
+  if (!in.at_end()) in.fail("trailing bytes");
 }
 
 void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& given,
@@ -193,6 +209,10 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
         MessageWriter out;
         out.u8(complete ? kComplete : kStopped);
         out.i32(task);
+        ReturnedPart counts;
+        count_leaves(part, counts);
+        for (long x : {counts.nodes, counts.solutions, counts.undecided, counts.discarded})
+          out.i64(x);
         write_search_part(out, part, uint32_t(factors.size()));
         out.u64(records.size());
         out.bytes(records.data(), records.size());

@@ -10,9 +10,11 @@
 //     u8 1  i32 task                             (done with task: give me the next)
 //   thread s of a rank -> rank 0, Bulk channel, tag kFromThread + s, sent while the thread
 //   searches its next subtree (one part of a thread in flight at a time):
-//     u8 1  i32 task  part  u64 R  R bytes       (task searched: part as in
-//                                                 apps/search_part_codec.h, its records)
-//     u8 2  i32 task  part  u64 R  R bytes       (task stopped: a partial part)
+//     u8 1  i32 task  counts  part  u64 R  R bytes   (task searched: part as in
+//                                                   apps/search_part_codec.h, its records)
+//     u8 2  i32 task  counts  part  u64 R  R bytes   (task stopped: a partial part)
+//     counts: i64 nodes, solutions, undecided, discarded (its leaves: progress before the
+//     part is decoded, at the merge)
 //   rank 0 -> thread s, tag kToThread + s:
 //     i32 task  i32 parent_split  nv × (f64 lo  f64 hi)   (search this)
 //     i32 -1                                              (no more: the thread ends)
@@ -38,10 +40,13 @@ class MpiSubtreeServer : public RemoteSubtrees {
   MpiSubtreeServer(MpiJob& job, int nv) : job_(job), nv_(nv) {}
   void serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred, int factors,
              const std::function<bool()>& stopped, const Returned& returned) override;
+  void decode(int32_t task, const std::string& bytes, int factors,
+              SearchPart& part) const override;
 
  private:
   MpiJob& job_;
   int nv_;
+  std::vector<int> source_;  // per subtree: the rank that sent its part (for errors)
 };
 
 // Another rank's side: `config.threads` threads ask rank 0 for subtrees and search them

@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "le_reader.h"
 #include "le_writer.h"
+#include "pipeline/remote_subtrees.h"
 #include "search_part_codec.h"
 
 namespace aspects {
@@ -45,8 +46,9 @@ std::pair<long, double> encode_and_decode(const SearchPart& part, size_t deferre
   return {long(w.s.size()), seconds};
 }
 
-// The message of mpi_subtrees.cpp: kind u8, task i32, the part, u64 record count, records.
-constexpr long kMessageOverhead = 1 + 4 + 8;
+// The message of mpi_subtrees.cpp: kind u8, task i32, four u64 counts, the part, u64 record
+// count, records.
+constexpr long kMessageOverhead = 1 + 4 + 4 * 8 + 8;
 
 std::string seconds_text(double s) {
   if (s < 0) return "";
@@ -65,13 +67,20 @@ void SubtreeStats::attach(AspectsConfig& cfg) {
                                               const PartWork& work) {
     part_done(k, part, &work, -1);
   };
-  cfg.subtree_observer.returned = [this](int32_t k, const SearchPart& part, size_t records) {
-    part_done(k, part, nullptr, long(records));
+  cfg.subtree_observer.returned = [this](int32_t k, const ReturnedPart& part, size_t records) {
+    if (part.bytes.empty()) return part_done(k, part.part, nullptr, long(records));
+    // Decoded here only for its counts (the run decodes it at the merge).
+    PartReader in(part.bytes);
+    SearchPart decoded;
+    read_search_part(in, decoded, nv_, p_, 0);
+    part_done(k, decoded, nullptr, long(records));
   };
 }
 
 void SubtreeStats::top_searched(const SearchState& st, const PartWork& work) {
   std::lock_guard<std::mutex> g(lock_);
+  nv_ = uint32_t(st.top.boxes.nv());
+  p_ = uint32_t(st.top.boxes.factors());
   top_.nodes = long(st.top.tree.size() - st.deferred.size());  // its leaves are their roots
   top_.output_boxes = st.top.boxes.size();
   top_.cpu_seconds = work.cpu_seconds;

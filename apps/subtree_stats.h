@@ -58,6 +58,7 @@ class SubtreeStats {
   void part_done(int32_t task, const SearchPart& part, const PartWork* work, long message);
   std::string path_;
   std::mutex lock_;  // the subtrees' rows are filled from several threads
+  uint32_t nv_ = 0, p_ = 0;  // the model's variables and factors (from the top)
   Row top_;
   std::vector<Row> levels_;  // the top's nodes and output boxes at each depth
   std::vector<Row> subtrees_;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "pipeline/aspects_search.h"
@@ -28,6 +29,9 @@ struct SearchState {
   std::vector<DeferredSubtree> deferred;  // the subtrees the top left, in depth-first order
   std::vector<uint8_t> done;              // per subtree: searched to the end (parts[k] valid)
   std::vector<SearchPart> parts;
+  // Per subtree: a part another process sent back, still in the bytes it came in (see
+  // pipeline/remote_subtrees.h; empty: parts[k] holds it), until the search is merged.
+  std::vector<std::string> encoded;
 };
 
 }  // namespace aspects

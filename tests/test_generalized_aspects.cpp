@@ -145,7 +145,9 @@ class ThreadAsRemote : public RemoteSubtrees {
       SearchPart part;
       const bool complete = search_subtree(m, config_, factors, deferred[k], part, nullptr);
       stopped_parts += !complete;
-      returned(k, complete ? PartOutcome::Complete : PartOutcome::Stopped, std::move(part),
+      ReturnedPart back;
+      back.part = std::move(part);
+      returned(k, complete ? PartOutcome::Complete : PartOutcome::Stopped, std::move(back),
                std::string());
     }
     // This thread ends here, and MPFR's caches (π) are per thread: a real server thread

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,14 +22,46 @@ enum class PartOutcome {
   Stopped,   // until a stop (a limit or a signal): the cells left are unexplored boxes
 };
 
+// A part searched by another process, as it came back: decoded, or (an MPI job) still the
+// bytes it travelled in, which RemoteSubtrees::decode reads when the search is merged, on
+// all of this process's threads. Taking a part in is then a copy: one thread takes in the
+// parts of the whole job (bench/RESULTS.md, "Issue 30, fourth slice").
+struct ReturnedPart {
+  SearchPart part;    // decoded, when `bytes` is empty
+  std::string bytes;  // or encoded
+  // Its nodes, and the leaves of each fate, before it is decoded (progress only).
+  long nodes = 0, solutions = 0, undecided = 0, discarded = 0;
+};
+
+// Counts `part`'s nodes and the leaves of each fate into `into`.
+inline void count_leaves(const SearchPart& part, ReturnedPart& into) {
+  into.nodes = long(part.tree.size());
+  into.solutions = into.undecided = into.discarded = 0;
+  for (const SearchNode& node : part.tree) {
+    if (node.internal()) continue;
+    into.solutions += node.fate == LeafFate::Solution;
+    into.undecided += node.fate == LeafFate::Undecided;
+    into.discarded += node.fate == LeafFate::Discarded;
+  }
+}
+
 class RemoteSubtrees {
  public:
   virtual ~RemoteSubtrees() = default;
 
   // A subtree searched elsewhere: its part and its certificate records (TreeSink records
   // as certificates/certificate_writer.h writes them; empty without a certificate).
-  using Returned = std::function<void(int32_t task, PartOutcome outcome, SearchPart&& part,
+  using Returned = std::function<void(int32_t task, PartOutcome outcome, ReturnedPart&& part,
                                       std::string&& records)>;
+
+  // The part of subtree `task` from the bytes it came back in (ReturnedPart::bytes), with
+  // `factors` signs a box. Called by several threads at once, after serve() has returned.
+  // Throws when the bytes are not such a part.
+  virtual void decode(int32_t task, const std::string& bytes, int factors,
+                      SearchPart& part) const {
+    (void)task, (void)bytes, (void)factors, (void)part;
+    throw std::logic_error("RemoteSubtrees: this server returns decoded parts");
+  }
 
   // Runs on a thread of its own while this process searches: hands out subtrees claimed
   // from `queue` (none once `stopped` says so: this process then marks them unexplored,

@@ -107,14 +107,26 @@ double resumed_share(const SearchState& st, const SearchStats& stats) {
 }
 
 // Progress only: a part searched elsewhere, counted as if searched here.
-void count_for_progress(const SearchPart& part, const Box& cell, SearchStats& stats) {
-  for (const SearchNode& node : part.tree) {
-    ++stats.processed;
-    stats.solutions += node.fate == LeafFate::Solution && !node.internal();
-    stats.undecided += node.fate == LeafFate::Undecided && !node.internal();
-    stats.discarded += node.fate == LeafFate::Discarded && !node.internal();
-  }
+void count_for_progress(ReturnedPart& part, const Box& cell, SearchStats& stats) {
+  if (part.bytes.empty()) count_leaves(part.part, part);
+  stats.processed += part.nodes;
+  stats.solutions += part.solutions;
+  stats.undecided += part.undecided;
+  stats.discarded += part.discarded;
   if (!stats.domain_width.empty()) stats.add_decided(stats.share(cell));
+}
+
+// The parts still encoded (another process's, pipeline/remote_subtrees.h), decoded on all
+// threads.
+void decode_returned(const RemoteSubtrees& remote, int factors, SearchState& st,
+                     Parallel& parallel) {
+  parallel.arena().execute([&] {
+    tbb::parallel_for(size_t(0), st.encoded.size(), [&](size_t k) {
+      if (st.encoded[k].empty()) return;
+      remote.decode(int32_t(k), st.encoded[k], factors, st.parts[k]);
+      std::string().swap(st.encoded[k]);
+    });
+  });
 }
 
 // The subtrees shared with other processes (config.remote): this process's threads and the
@@ -134,11 +146,12 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
     try {
       config.remote->serve(
           queue, st.deferred, int(factors.size()), [&] { return config.stopped(); },
-          [&](int32_t k, PartOutcome outcome, SearchPart&& part, std::string&& records) {
+          [&](int32_t k, PartOutcome outcome, ReturnedPart&& part, std::string&& records) {
             count_for_progress(part, st.deferred[k].box, stats);
             if (config.subtree_observer.returned)
               config.subtree_observer.returned(k, part, records.size());
-            st.parts[k] = std::move(part);
+            st.parts[k] = std::move(part.part);
+            st.encoded[k] = std::move(part.bytes);
             std::lock_guard<std::mutex> g(cert_lock);
             if (cert) cert->restore(k, records);
             if (outcome == PartOutcome::Complete) checkpoints.mark_done(k);
@@ -220,11 +233,13 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
                               cert ? cert->top() : nullptr, stats, tick, config.defer_depth,
                               &st.deferred);
     st.parts.resize(st.deferred.size());
+    st.encoded.resize(st.deferred.size());
     st.done.assign(st.deferred.size(), 0);
     if (config.subtree_observer.top_searched)
       config.subtree_observer.top_searched(st, top_clock.work());
   }
   check_resumed(st, factors.size());
+  st.encoded.resize(st.deferred.size());  // a resumed state holds decoded parts only
   if (config.resume && st.top_done) stats.resumed_share = resumed_share(st, stats);
   Checkpointer checkpoints(config, st);
   if (config.remote) {
@@ -263,6 +278,7 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
 
   SearchOutcome out;
   out.boxes = OutputBoxes(int(model.vars.size()), int(factors.size()));
+  if (config.remote) decode_returned(*config.remote, int(factors.size()), st, parallel);
   PartMerger(st.parts, out.boxes, out.tree).merge(st.top);
   out.diagnostics.add(st.top.diagnostics);
   for (const auto& part : st.parts) out.diagnostics.add(part.diagnostics);

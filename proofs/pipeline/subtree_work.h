@@ -41,14 +41,17 @@ class PartClock {
 };
 
 // The observers (AspectsConfig::subtree_observer); each may be empty.
+struct ReturnedPart;  // remote_subtrees.h
+
 struct SubtreeObserver {
   // Once, when the top of the tree is searched: the state with its deferred subtrees.
   std::function<void(const SearchState& st, const PartWork& top)> top_searched;
   // Each subtree searched here, from the thread that searched it (concurrently).
   std::function<void(int32_t task, const SearchPart& part, const PartWork& work)> searched_here;
-  // Each part another process sent back (an MPI job), with the bytes of its certificate
-  // records; its cost is not known here. From the thread serving the other processes.
-  std::function<void(int32_t task, const SearchPart& part, size_t record_bytes)> returned;
+  // Each part another process sent back (an MPI job; decoded or not), with the bytes of
+  // its certificate records; its cost is not known here. From the thread serving the other
+  // processes.
+  std::function<void(int32_t task, const ReturnedPart& part, size_t record_bytes)> returned;
 };
 
 }  // namespace aspects
