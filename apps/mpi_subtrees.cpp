@@ -66,12 +66,12 @@ std::string read_file(const std::string& path) {
 }  // namespace
 
 int defer_depth_for(int processes, int threads) {
-  const double subtrees = 64.0 * std::max(1, processes) * std::max(1, threads);
+  const double subtrees = 256.0 * std::max(1, processes) * std::max(1, threads);
   return std::max(8, int(std::ceil(std::log2(subtrees))));
 }
 
 void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
-                             int /*factors: read at decode()*/, const std::function<bool()>& stopped,
+                             int /*factors*/, const std::function<bool()>& stopped,
                              const Returned& returned) {
   if (deferred.size() < size_t(job_.size()) && !stopped())  // a stopped top left the rest
     std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "

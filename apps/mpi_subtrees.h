@@ -57,11 +57,11 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& c
                                bool certificate);
 
 // The depth at which rank 0 cuts the tree into subtrees for P processes of T threads: at
-// least 8 (a single process's cut), and deep enough for 64 subtrees a thread, as nearly all
+// least 8 (a single process's cut), and deep enough for 256 subtrees a thread, as nearly all
 // the work sits in a few subtrees near the singular surfaces (the replay of 3-RPR at eps 0.1
-// on 16 ranks of 2 threads: 62 % search efficiency at 4 subtrees a thread, 81 % at 60;
-// bench/RESULTS.md). The result does not depend on it: a subtree is searched from its box
-// alone.
+// on 256 ranks, rank 0's intake free: 79 % search efficiency at 64 subtrees a thread, 92 % at
+// 256; bench/RESULTS.md, "Issue 30, fourth slice"). The result does not depend on it: a
+// subtree is searched from its box alone.
 int defer_depth_for(int processes, int threads);
 
 }  // namespace aspects

@@ -11,9 +11,9 @@
 #              --time-limit, resumed with P = 3 (the checkpoint written when it stops)
 #   dead_rank  P = 3, rank 1 killed (SIGKILL) once a checkpoint is written: the job fails,
 #              no output under a final name; resumed with P = 2
-#   cut_depth  P = 40 of 1 thread (the tree cut at depth 12: 64 subtrees a thread,
+#   cut_depth  P = 40 of 1 thread (the tree cut at depth 14: 256 subtrees a thread,
 #              apps/mpi_subtrees.h) stopped by SIGTERM to rank 0: the checkpoint records
-#              12; one process resumes it and stops at once (--max-boxes 1): its
+#              14; one process resumes it and stops at once (--max-boxes 1): its
 #              checkpoint still says 12; resumed with P = 2
 #
 # Seen failing, each once on purpose, then restored:
@@ -169,11 +169,11 @@ case $case_ in
   cut_depth)
     signal_rank 0 40 "$work/p40"
     expect_stopped "$status" "$work/p40" signal "P = 40, SIGTERM to rank 0"
-    [ "$(depth "$work/p40")" = 12 ] || fail "P = 40: the checkpoint says depth $(depth "$work/p40")"
+    [ "$(depth "$work/p40")" = 14 ] || fail "P = 40: the checkpoint says depth $(depth "$work/p40")"
     "$aspects" solve --resume "$work/p40" --threads 2 --quiet --max-boxes 1 > "$work/log" 2>&1
     expect_stopped $? "$work/p40" max-boxes "P = 40 resumed as one process, --max-boxes 1"
-    [ "$(depth "$work/p40")" = 12 ] ||
-      fail "resumed as one process: the checkpoint says depth $(depth "$work/p40"), not 12"
+    [ "$(depth "$work/p40")" = 14 ] ||
+      fail "resumed as one process: the checkpoint says depth $(depth "$work/p40"), not 14"
     resume_mpi 2 "$work/p40" "stopped with P = 40, then as one process, resumed with P = 2"
     ;;
   *) fail "unknown case" ;;

@@ -14,7 +14,7 @@
 #    their 4 variables, so the first split of a subtree is the same either way);
 #  - rank 0 keeping the parts in arrival order (parts[arrival] for parts[task],
 #    proofs/pipeline/search_phase.cpp): rank 0 dies (SIGSEGV) at P = 2.
-# The first also fails the P = 40 case (rprpr: the tree cut at depth 13).
+# The first also fails the P = 40 case (rprpr: the tree cut at depth 15).
 set -eu
 mpirun=$1 aspects=$2 check=$3 model=$4 eps=$5
 shift 5
