@@ -5,23 +5,28 @@ T threads, and prints the predicted speed-up, efficiency and load balance as a m
 table; with --plot, a PNG.
 
 What is replayed (apps/mpi_subtrees.cpp, proofs/pipeline/search_phase.cpp):
-  - rank 0 searches the top of the tree alone, cut at depth d = max(8, ceil(log2(8 P))) (or
-    --deeper levels more); its time is the measured top's (recorded at a finer cut D) times
-    the share of the top's boxes above depth d (the CSV's level rows);
+  - rank 0 searches the top of the tree alone, cut at depth d = max(8, ceil(log2(256 P T)))
+    (--per-thread N for another count a thread, --old-cut for the first slice's 8 a rank,
+    --deeper K levels more); its time is the measured top's (recorded at a finer cut D)
+    times the share of the top's boxes above depth d (the CSV's level rows);
   - a subtree of the cut at d is the group of recorded subtrees under it: its work is the
     sum of their thread CPU seconds, plus the top's boxes between d and D at the top's cost
     per box, shared among the groups by their number of recorded subtrees (a group's own
     count of them is not recorded);
-  - then every thread of every rank takes the next subtree, depth first, when it is idle;
-  - a thread of another rank encodes its part (as long as rank 0's decoding, measured), sends
-    it with its certificate records (--records-per-node bytes each: a part's records are not
-    known when rank 0 searched it) and waits for its next subtree, which rank 0's serving
-    thread sends only once it has taken the part in. That thread takes one message at a
-    time: it receives it at --bandwidth bytes/s (a large message moves when its receive is
-    posted), decodes it (measured) and writes its records to a file at --disk bytes/s
-    (CertificateWriter::restore); each message waits --latency seconds on top (the ranks
-    poll, sleeping up to 1 ms). --free-ingest makes all of this free: what the scheduler
-    alone would give;
+  - then every thread of every rank takes the next subtree when it is idle, depth first
+    (--order heaviest: first the subtrees of the runs that have taken longest so far; tried
+    in the replay, not built);
+  - a thread of another rank encodes its part (as long as rank 0's decoding, measured) and
+    sends it with its certificate records (--records-per-node bytes each: a part's records
+    are not known when rank 0 searched it). With --async-parts (as built since the fourth
+    slice) it asks for its next subtree at once (a request and its answer: 2 × --latency)
+    while its part queues at rank 0; without, it waits until rank 0 has taken the part in.
+    Rank 0's serving thread takes one part at a time: it receives it at --bandwidth bytes/s,
+    decodes it (measured; with --decode-at-merge, as built, it keeps the bytes and the merge
+    decodes them on rank 0's --threads, added to the later phases) and writes its records
+    to a file at --disk bytes/s (CertificateWriter::restore); each message waits --latency
+    seconds on top (the ranks poll, sleeping up to 1 ms). --free-ingest makes all of this
+    free: what the scheduler alone would give. The search ends when the last part is in;
   - rank 0 then runs every later phase alone: the measured `phase_seconds` of the run
     (summary.json) but the search's, at the run's thread count (they use rank 0's threads).
 
@@ -31,17 +36,24 @@ seconds over the mean (1 is perfect). The whole run cannot scale beyond
 (search + later phases) / later phases (Amdahl): the table says so.
 
 --grow-from CSV: a coarser run of the same model at the same cut (say eps 0.6 beside 0.3):
-each subtree of the last --stats is extrapolated to a finer eps by the growth of its boxes
-between the two, g = (n / n_coarse) ** (log(eps / eps_target) / log(eps_coarse / eps)),
-its seconds, boxes and bytes multiplied by g; then all rescaled so that the boxes sum to
---target-nodes when given (a measured total), at the cost per box measured at eps. An
-extrapolation, not a measurement.
+each subtree of the last --stats is extrapolated to a finer eps by the growth of the boxes
+of its group (the recorded subtrees under its path of length --grow-depth; default the
+recorded depth, each subtree alone) between the two,
+g = (n / n_coarse) ** (log(eps / eps_target) / log(eps_coarse / eps)), its seconds, boxes
+and bytes multiplied by g; then all rescaled so that the boxes sum to --target-nodes when
+given (a measured total), at the cost per box measured at eps. An extrapolation, not a
+measurement: checked against a measured pair in bench/RESULTS.md ("Issue 30, fourth slice"),
+where groups at depth 0 to 12 predict the replay of the measured eps within 2 points and
+each subtree alone (depth 16) does not (a subtree of one node at the coarser eps grows
+without meaning).
 
 Usage: scaling_replay.py --stats CSV --summary JSON [--label TEXT] [--threads T]
   [--ranks 1,2,4,...] [--plot PNG] [--latency S] [--bandwidth B] [--disk B]
-  [--records-per-node B] [--deeper K] [--no-cert] [--free-ingest] [--grow-from CSV --eps E
-  --eps-coarse E --eps-target E [--target-nodes N] [--later-seconds S]
-  [--extra-records-per-node B]]
+  [--records-per-node B] [--per-thread N | --old-cut] [--deeper K] [--no-cert]
+  [--free-ingest] [--async-parts] [--decode-at-merge] [--part-scale F]
+  [--order dfs|heaviest [--blocks B]]
+  [--grow-from CSV --eps E --eps-coarse E --eps-target E [--grow-depth G]
+  [--target-nodes N] [--later-seconds S] [--extra-records-per-node B]]
 """
 import argparse
 import csv
@@ -66,9 +78,11 @@ def read_rows(path):
     return top[0], levels, sub
 
 
-def cut_for(ranks, deeper):
-    """apps/mpi_subtrees.cpp's defer_depth_for: at least 8 subtrees per process."""
-    return max(8, math.ceil(math.log2(8 * max(1, ranks)))) + deeper
+def cut_for(ranks, threads, a):
+    """apps/mpi_subtrees.cpp's defer_depth_for: --per-thread subtrees a thread of the job
+    (256; --old-cut: 8 a rank, the first slice's rule), --deeper levels more."""
+    subtrees = 8 * max(1, ranks) if a.old_cut else a.per_thread * max(1, ranks) * max(1, threads)
+    return max(8, math.ceil(math.log2(subtrees))) + a.deeper
 
 
 class Work:
@@ -105,11 +119,80 @@ class Work:
         """The top's CPU seconds when cut at `depth`."""
         return self.top_cpu * sum(self.levels[:depth]) / max(1, sum(self.levels))
 
+class DepthFirst:
+    """Subtrees in depth-first order (proofs/pipeline/subtree_queue.h)."""
+
+    def __init__(self, n, blocks):
+        self.n, self.next = n, 0
+
+    def claim(self, t):
+        if self.next >= self.n:
+            return None
+        self.next += 1
+        return self.next - 1
+
+    def finished(self, k, t):
+        pass
+
+
+class HeaviestFirst:
+    """Tried, not built: the depth-first order cut into `blocks` runs of
+    consecutive subtrees; one subtree from each run in turn until every run has one started,
+    then the next subtree of the run whose subtrees have taken longest: the mean of those
+    finished, or the longest still running so far, whichever is more."""
+
+    def __init__(self, n, blocks):
+        self.b = max(1, min(blocks, n))
+        self.start = [n * i // self.b for i in range(self.b + 1)]
+        self.cursor = self.start[:-1]
+        self.sum = [0.0] * self.b
+        self.count = [0] * self.b
+        self.running = [dict() for _ in range(self.b)]
+        self.explored = 0
+
+    def block(self, k):
+        lo, hi = 0, self.b
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if self.start[mid] <= k:
+                lo = mid
+            else:
+                hi = mid
+        return lo
+
+    def claim(self, t):
+        while self.explored < self.b:
+            i = self.explored
+            self.explored += 1
+            if self.cursor[i] < self.start[i + 1]:
+                return self.take(i, t)
+        best, best_cost = None, -1.0
+        for i in range(self.b):
+            if self.cursor[i] >= self.start[i + 1]:
+                continue
+            cost = self.sum[i] / self.count[i] if self.count[i] else 0.0
+            for began in self.running[i].values():
+                cost = max(cost, t - began)
+            if cost > best_cost:
+                best, best_cost = i, cost
+        return None if best is None else self.take(best, t)
+
+    def take(self, i, t):
+        k = self.cursor[i]
+        self.cursor[i] += 1
+        self.running[i][k] = t
+        return k
+
+    def finished(self, k, t):
+        i = self.block(k)
+        self.sum[i] += t - self.running[i].pop(k)
+        self.count[i] += 1
+
 
 def replay(work, ranks, threads, a, deeper):
     """Seconds of the search on `ranks` ranks of `threads` threads, and per-rank busy s."""
-    depth = min(cut_for(ranks, deeper) if ranks > 1 else 8 + deeper, work.depth)
-    tasks = work.coarse(depth)
+    depth = min(cut_for(ranks, threads, a) if ranks > 1 else 8 + deeper, work.depth)
+    tasks = [(c, n, b * a.part_scale, d * a.part_scale) for c, n, b, d in work.coarse(depth)]
     records_rate = 0 if a.no_cert else a.records_per_node
     top = work.top_seconds(depth)
     # Events: (time, order, kind, worker, task). Kinds: 0 ready for a subtree, 1 a part
@@ -117,7 +200,9 @@ def replay(work, ranks, threads, a, deeper):
     events = [(top, w, 0, w, -1) for w in range(ranks * threads)]
     heapq.heapify(events)
     order = len(events)
-    next_task, server_free, end = 0, top, top
+    server_free, end = top, top
+    sched = (HeaviestFirst if a.order == "heaviest" else DepthFirst)(len(tasks), a.blocks)
+    current = {}  # worker -> the subtree it searches
     busy = [0.0] * ranks
     while events:
         t, _, kind, w, k = heapq.heappop(events)
@@ -127,18 +212,22 @@ def replay(work, ranks, threads, a, deeper):
             start = max(server_free, t)
             if not a.free_ingest:
                 records = nodes * records_rate
-                server_free = start + (part + records) / a.bandwidth + decode + records / a.disk
+                decode_here = 0 if a.decode_at_merge else decode
+                server_free = start + (part + records) / a.bandwidth + decode_here + records / a.disk
             else:
                 server_free = start
             end = max(end, server_free)
-            heapq.heappush(events, (server_free + (0 if a.free_ingest else a.latency), order, 0,
-                                    w, -1))
-            order += 1
+            if not a.async_parts:
+                heapq.heappush(events, (server_free + (0 if a.free_ingest else a.latency),
+                                        order, 0, w, -1))
+                order += 1
             continue
-        if next_task >= len(tasks):
+        if kind == 0 and w in current:
+            sched.finished(current.pop(w), t)
+        k = sched.claim(t)
+        if k is None:
             continue
-        k = next_task
-        next_task += 1
+        current[w] = k
         cpu, nodes, part, decode = tasks[k]
         busy[rank] += cpu
         if rank == 0:
@@ -147,6 +236,10 @@ def replay(work, ranks, threads, a, deeper):
         else:
             sent = t + cpu + (0 if a.free_ingest else decode)  # encoding costs about a decoding
             heapq.heappush(events, (sent + (0 if a.free_ingest else a.latency), order, 1, w, k))
+            if a.async_parts:  # asks for its next subtree while its part waits at rank 0
+                order += 1
+                heapq.heappush(events, (sent + (0 if a.free_ingest else 2 * a.latency), order,
+                                        0, w, -1))
         order += 1
     return end, busy, depth, len(tasks)
 
@@ -158,7 +251,11 @@ def later_phases(summary):
 def table(label, work, later, a, out):
     base, _, _, _ = replay(work, 1, a.threads, a, a.deeper)
     records = 0 if a.no_cert else a.records_per_node * sum(work.nodes)
-    ingest = (sum(work.part_bytes) + records) / a.bandwidth + sum(work.decode) + records / a.disk
+    decode = a.part_scale * sum(work.decode)
+    ingest = (a.part_scale * sum(work.part_bytes) / a.bandwidth +
+              (0 if a.decode_at_merge else decode) + records / a.bandwidth + records / a.disk)
+    if a.decode_at_merge:  # the merge decodes on rank 0's threads
+        later += decode / a.threads
     out.append(f"\n{label}: {work.processed:,} boxes processed, {len(work.paths):,} subtrees "
                f"recorded at depth {work.depth}; search work {sum(work.cpu) + work.top_cpu:,.1f} "
                f"CPU s; later phases {later:,.1f} s on rank 0; {a.threads} thread(s) per rank; "
@@ -186,12 +283,20 @@ def table(label, work, later, a, out):
 def extrapolated(work, a):
     """Each subtree grown from eps to eps_target as its boxes grew from eps_coarse to eps."""
     _, _, csub = read_rows(a.grow_from)
-    coarse = {r["path"]: int(r["nodes"]) for r in csub}
     power = math.log(a.eps / a.eps_target) / math.log(a.eps_coarse / a.eps)
-    growth = []
+    # Growth measured on the groups of subtrees under each path of length --grow-depth (the
+    # recorded depth: each subtree alone); every subtree of a group grows alike. A subtree of
+    # a few nodes at eps_coarse has no meaningful growth of its own.
+    g_depth = a.grow_depth if a.grow_depth is not None else work.depth
+    coarse, fine = {}, {}
+    for r in csub:
+        coarse[r["path"][:g_depth]] = coarse.get(r["path"][:g_depth], 0) + int(r["nodes"])
     for p, n in zip(work.paths, work.nodes):
-        c = coarse.get(p, 0)
-        # A subtree the coarser run did not defer or that did not grow: kept as it is.
+        fine[p[:g_depth]] = fine.get(p[:g_depth], 0) + n
+    growth = []
+    for p in work.paths:
+        c, n = coarse.get(p[:g_depth], 0), fine[p[:g_depth]]
+        # A group the coarser run did not defer or that did not grow: kept as it is.
         growth.append((n / c) ** power if c > 0 and n > c else 1.0)
     if a.target_nodes:  # the shape extrapolated, the size measured
         scale = a.target_nodes / sum(n * g for n, g in zip(work.nodes, growth))
@@ -222,11 +327,29 @@ def main():
     ap.add_argument("--free-ingest", action="store_true",
                     help="rank 0 takes parts in at no cost, no latency: the scheduler alone")
     ap.add_argument("--deeper", type=int, default=0, help="cut this many levels deeper")
+    ap.add_argument("--old-cut", action="store_true",
+                    help="the first slice's cut: 8 subtrees a rank")
+    ap.add_argument("--per-thread", type=int, default=256,
+                    help="the cut: this many subtrees a thread of the job (the third slice: 64)")
+    ap.add_argument("--async-parts", action="store_true",
+                    help="a rank's thread asks for its next subtree as soon as its part is "
+                    "sent; rank 0 takes parts in behind (first come, first served)")
+    ap.add_argument("--order", choices=["dfs", "heaviest"], default="dfs",
+                    help="the order subtrees are handed out in")
+    ap.add_argument("--blocks", type=int, default=256, help="--order heaviest's runs")
+    ap.add_argument("--decode-at-merge", action="store_true",
+                    help="rank 0 keeps parts encoded and decodes them at the merge, on its "
+                    "--threads (added to the later phases)")
+    ap.add_argument("--part-scale", type=float, default=1.0,
+                    help="parts this many times the recorded bytes and decode seconds")
     ap.add_argument("--scenario", default="", help="appended to every label")
     ap.add_argument("--points-out", help="write the curves as JSON (for --plot-points)")
     ap.add_argument("--plot-points", nargs="+", help="plot these --points-out files only")
     ap.add_argument("--plot")
     ap.add_argument("--grow-from", help="a coarser run's CSV: extrapolate the last --stats")
+    ap.add_argument("--grow-depth", type=int,
+                    help="--grow-from's growth measured on groups at this depth (default: "
+                    "each recorded subtree alone)")
     ap.add_argument("--eps", type=float)
     ap.add_argument("--eps-coarse", type=float)
     ap.add_argument("--eps-target", type=float)
