@@ -1,6 +1,7 @@
 #include "certificate_writer.h"
 
 #include <openssl/sha.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -62,6 +63,10 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
 // An unfinished certificate's temporary is removed by file_.
 CertificateWriter::~CertificateWriter() {
   if (compressed_ && f_) std::fclose(f_);
+  if (spool_) {
+    std::fclose(spool_);
+    std::remove((file_.temporary_path() + ".restored").c_str());
+  }
 }
 
 void CertificateWriter::line(const std::string& s) {
@@ -108,9 +113,12 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
 std::string CertificateWriter::records(int32_t task) {
   TreeRecordFile& part = task < 0 ? *top_ : *tasks_.at(task);
   part.close();
-  std::ifstream in(part.path(), std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw std::runtime_error("cannot read " + part.path());
+  long size = 0;
+  FILE* in = open_records(part, &size);
+  std::string text(size_t(size), '\0');
+  const bool ok = std::fread(&text[0], 1, text.size(), in) == text.size();
+  std::fclose(in);
+  if (!ok) throw std::runtime_error("cannot read " + part.path());
   return text;
 }
 
@@ -120,11 +128,43 @@ void CertificateWriter::restore(int32_t task, const std::string& records) {
     if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);
     slot = &tasks_[task];
   }
-  std::string name = task < 0 ? ".top" : ".t" + std::to_string(task);
-  *slot = std::make_unique<TreeRecordFile>(file_.temporary_path() + name, p_, n_);
-  if (format_ == 3) (*slot)->restored_binary();
-  (*slot)->write(records);
-  (*slot)->close();
+  const std::string spool = file_.temporary_path() + ".restored";
+  if (!spool_ && !(spool_ = std::fopen(spool.c_str(), "w+b")))
+    throw std::runtime_error("cannot write " + spool + ": " + std::strerror(errno));
+  if (std::fwrite(records.data(), 1, records.size(), spool_) != records.size())
+    throw std::runtime_error("cannot write " + spool + ": " + std::strerror(errno ? errno : EIO));
+  *slot = std::make_unique<TreeRecordFile>(spool, spool_size_,
+                                           spool_size_ + long(records.size()), format_ == 3);
+  spool_size_ += long(records.size());
+}
+
+FILE* CertificateWriter::open_records(const TreeRecordFile& stream, long* size) {
+  if (stream.shared() && spool_ && std::fflush(spool_) != 0)
+    throw std::runtime_error("cannot write " + stream.path() + ": " + std::strerror(errno));
+  FILE* in = std::fopen(stream.path().c_str(), "rb");
+  if (!in) throw std::runtime_error("cannot read " + stream.path());
+  long end = stream.end();
+  if (end < 0) {
+    std::fseek(in, 0, SEEK_END);
+    end = std::ftell(in);
+  }
+  *size = end - stream.begin();
+  if (*size < 0 || std::fseek(in, stream.begin(), SEEK_SET) != 0) {
+    std::fclose(in);
+    throw std::runtime_error("cannot read " + stream.path());
+  }
+  return in;
+}
+
+// Spliced: its disk space is free for the rest (3-RPR at eps 0.1: 48 GB of records); a
+// range of the spool is punched out of it (where the filesystem can).
+void CertificateWriter::spliced(const TreeRecordFile& stream) {
+  if (!stream.shared()) {
+    std::remove(stream.path().c_str());
+  } else if (spool_ && stream.end() > stream.begin()) {
+    fallocate(fileno(spool_), FALLOC_FL_PUNCH_HOLE | FALLOC_FL_KEEP_SIZE, stream.begin(),
+              stream.end() - stream.begin());
+  }
 }
 
 TreeSink* CertificateWriter::subtree(int32_t task, const Box& root) {
@@ -140,12 +180,13 @@ TreeSink* CertificateWriter::subtree(int32_t task, const Box& root) {
 void CertificateWriter::splice(TreeRecordFile& stream) {
   if (stream.binary()) return splice_binary(stream);
   stream.close();
-  FILE* in = std::fopen(stream.path().c_str(), "rb");
-  if (!in) throw std::runtime_error("cannot read " + stream.path());
+  long left = 0;
+  FILE* in = open_records(stream, &left);
   char* buf = nullptr;
   size_t cap = 0;
   ssize_t len;
-  while ((len = getline(&buf, &cap, in)) > 0) {
+  while (left > 0 && (len = getline(&buf, &cap, in)) > 0) {
+    left -= long(len);
     if (buf[0] == '@') {
       splice(*tasks_.at(std::stol(buf + 1)));
       continue;
@@ -164,24 +205,23 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
   }
   std::free(buf);
   std::fclose(in);
-  // Spliced: its disk space is free for the rest (3-RPR at eps 0.1: 48 GB of records).
-  std::remove(stream.path().c_str());
+  if (left != 0) throw std::runtime_error("cannot read " + stream.path());
+  spliced(stream);
 }
 
 // Format 3: the records are copied as they are (ids are implied), each deferred subtree
 // spliced at its mark; the trailer gives the records and leaves they count.
 void CertificateWriter::splice_binary(TreeRecordFile& stream) {
   stream.close();
-  FILE* in = std::fopen(stream.path().c_str(), "rb");
-  if (!in) throw std::runtime_error("cannot read " + stream.path());
+  long all = 0;
+  FILE* in = open_records(stream, &all);
   unsigned char trailer[16];
-  std::fseek(in, 0, SEEK_END);
-  const long size = std::ftell(in) - 16;
-  if (size < 0 || std::fseek(in, size, SEEK_SET) != 0 || std::fread(trailer, 1, 16, in) != 16)
+  const long size = all - 16;
+  if (size < 0 || std::fseek(in, stream.begin() + size, SEEK_SET) != 0 ||
+      std::fread(trailer, 1, 16, in) != 16 || std::fseek(in, stream.begin(), SEEK_SET) != 0)
     throw std::runtime_error("cannot read " + stream.path());
   uint64_t count[2] = {0, 0};
   for (int i = 0; i < 16; ++i) count[i / 8] |= uint64_t(trailer[i]) << (8 * (i % 8));
-  std::rewind(in);
   std::vector<char> buf(1 << 20);
   long at = 0;
   const auto copy_to = [&](long end) {
@@ -202,7 +242,7 @@ void CertificateWriter::splice_binary(TreeRecordFile& stream) {
   bytes_ += size;
   lines_ += long(count[0]);
   leaves_ += long(count[1]);
-  std::remove(stream.path().c_str());  // as splice(): its disk space is free for the rest
+  spliced(stream);
 }
 
 std::unique_ptr<CompactTree> compact_tree(const Box& root, const Model& model, int factors) {
@@ -218,9 +258,12 @@ TreeRecordFile::TreeRecordFile(const std::string& path, int factors, int n,
   if (!f_) throw std::runtime_error("cannot write " + path_);
 }
 
+TreeRecordFile::TreeRecordFile(const std::string& path, long begin, long end, bool binary)
+    : path_(path), begin_(begin), end_(end), binary_(binary), trailer_(binary) {}
+
 TreeRecordFile::~TreeRecordFile() {
   if (f_) std::fclose(f_);
-  std::remove(path_.c_str());
+  if (!shared()) std::remove(path_.c_str());
 }
 
 void TreeRecordFile::close() {
@@ -237,11 +280,6 @@ void TreeRecordFile::close() {
   ok = std::fclose(f_) == 0 && ok;
   f_ = nullptr;
   if (!ok) throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno ? errno : EIO));
-}
-
-void TreeRecordFile::write(const std::string& records) {
-  if (std::fwrite(records.data(), 1, records.size(), f_) != records.size())
-    throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno ? errno : EIO));
 }
 
 void TreeRecordFile::signs(const int8_t* s) {

@@ -26,6 +26,9 @@ class TreeRecordFile : public TreeSink {
  public:
   TreeRecordFile(const std::string& path, int factors, int n,
                  std::unique_ptr<CompactTree> compact = nullptr);
+  // Records already written, bytes [begin, end) of another's file (CertificateWriter's
+  // spool of restored parts): read, never written nor removed.
+  TreeRecordFile(const std::string& path, long begin, long end, bool binary);
   ~TreeRecordFile() override;
   TreeRecordFile(const TreeRecordFile&) = delete;
   TreeRecordFile& operator=(const TreeRecordFile&) = delete;
@@ -40,12 +43,13 @@ class TreeRecordFile : public TreeSink {
   void finished() override { close(); }
 
   const std::string& path() const { return path_; }
+  // Where its records are in path(): [begin, end); end -1: to the end of the file.
+  long begin() const { return begin_; }
+  long end() const { return end_; }
+  bool shared() const { return end_ >= 0; }
   void close();  // flushes (format 3: after the trailer); the file can then be read back
-  void write(const std::string& records);
-  // Format 3: the file holds binary records; `restored`: written by another's TreeRecordFile
-  // (records passed to write()), trailer included.
+  // Format 3: the file holds binary records (a shared range: with their trailer).
   bool binary() const { return binary_; }
-  void restored_binary() { binary_ = trailer_ = true; }
   struct Mark {
     long offset;  // bytes of this file's records before the deferred subtree's place
     int32_t task;
@@ -57,7 +61,8 @@ class TreeRecordFile : public TreeSink {
   void emit();  // format 3: writes record_, one record
   std::string path_;
   FILE* f_ = nullptr;
-  int p_, n_;
+  long begin_ = 0, end_ = -1;
+  int p_ = 0, n_ = 0;
   std::unique_ptr<CompactTree> compact_;
   bool binary_ = false, trailer_ = false;
   std::string record_;
@@ -100,6 +105,8 @@ class CertificateWriter : public CertificateSink {
   void end_line();
   void splice(TreeRecordFile& stream);
   void splice_binary(TreeRecordFile& stream);
+  FILE* open_records(const TreeRecordFile& stream, long* size);  // at its first byte
+  void spliced(const TreeRecordFile& stream);  // frees its disk space
   void binary(const std::string& record);  // one format 3 record
   void links(const Model& model, const AspectsResult& r);
   void csncs(const AspectsResult& r);
@@ -109,6 +116,11 @@ class CertificateWriter : public CertificateSink {
   FILE* f_ = nullptr;  // file_'s stream, or the compressor layered over it
   std::unique_ptr<TreeRecordFile> top_;
   std::vector<std::unique_ptr<TreeRecordFile>> tasks_;
+  // Restored parts' records, one after another in one file: an MPI job's rank 0 restores
+  // a part for each subtree another rank searched, and a file each cost 150 µs to create
+  // on ext4 (65,536 subtrees on 256 ranks), more on a parallel filesystem.
+  FILE* spool_ = nullptr;
+  long spool_size_ = 0;
   int p_ = 0, n_ = 0;
   long lines_ = 0, leaves_ = 0, bytes_ = 0;
   bool compressed_ = false;
