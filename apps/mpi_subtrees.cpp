@@ -32,7 +32,7 @@ constexpr int kStop = 13;
 constexpr int kFromThread = 1000;
 constexpr int kToThread = 3000;
 constexpr int kMaxThreads = 1024;  // --threads' limit
-constexpr uint8_t kReady = 0, kDone = 1;        // requests
+constexpr uint8_t kReady = 0;                   // a request
 constexpr uint8_t kComplete = 1, kStopped = 2;  // parts
 
 std::string task_message(int32_t task, const std::vector<DeferredSubtree>& deferred) {
@@ -78,16 +78,15 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
               << job_.size() << " processes: some will have nothing to search (fewer "
               << "processes, or a smaller --eps, keeps them busy)\n";
   source_.assign(deferred.size(), -1);
-  // The subtree each (rank, thread) was given last, which its next request must name.
-  std::map<std::pair<int, int>, int32_t> given;
   // The subtrees given whose parts have not come back yet: a part must answer one of them.
+  // A thread holds two at most: the one it searches and the next, asked for in advance.
   std::set<std::tuple<int, int, int32_t>> owed;
   // Once this process stops, the ranks searching a subtree are told to stop it (the others
   // get no more subtrees).
   bool told = false;
   auto tell_stop = [&] {
     std::vector<uint8_t> searching(job_.size(), 0);
-    for (const auto& [who, task] : given) searching[who.first] |= task >= 0;
+    for (const auto& [rank, thread, task] : owed) searching[rank] = 1;
     for (int r = 1; r < job_.size(); ++r)
       if (searching[r]) job_.send(r, kStop, std::string());
     told = true;
@@ -100,16 +99,8 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     const int thread = tag - kFromThread;
     MessageReader in(msg, sender);
     if (thread < 0 || thread >= kMaxThreads) in.fail("unexpected tag " + std::to_string(tag));
-    const uint8_t kind = in.u8();
-    auto it = given.find({sender, thread});
-    if (kind == kDone) {
-      if (it == given.end() || it->second != in.i32()) in.fail("a subtree it was not given");
-    } else if (kind != kReady || it != given.end()) {
-      in.fail("unexpected message");
-    }
-    if (!in.at_end()) in.fail("trailing bytes");
+    if (in.u8() != kReady || !in.at_end()) in.fail("unexpected message");
     const int32_t next = stopped() ? -1 : queue.claim();
-    given[{sender, thread}] = next;
     if (next >= 0) owed.insert({sender, thread, next});
     job_.send(sender, kToThread + thread, task_message(next, deferred));
     return false;
@@ -175,16 +166,15 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
   parallel.arena().execute([&] {
     tbb::parallel_for(0, threads, [&](int thread) {
       set_working_precision(prec);  // MPFR's default precision is per thread
-      MessageWriter reply;
-      reply.u8(kReady);
-      std::future<void> sending;  // the last part's send
-      for (;;) {
-        job.send(0, kFromThread + thread, reply.s);
+      MessageWriter ready;
+      ready.u8(kReady);
+      // The next subtree is asked for before this one is searched: its answer is there
+      // when the search ends, instead of a round trip (and rank 0's polling) between two.
+      auto next_subtree = [&](DeferredSubtree& subtree) {
         const std::string msg = job.receive(0, kToThread + thread);
         MessageReader in(msg, 0);
-        DeferredSubtree subtree;
         const int32_t task = in.i32();
-        if (task < 0) break;
+        if (task < 0) return task;
         subtree.parent_split = in.i32();
         subtree.node = -1;
         subtree.box.resize(nv);
@@ -194,6 +184,13 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
           x.set_hull(lo, hi);
         }
         if (!in.at_end()) in.fail("trailing bytes");
+        return task;
+      };
+      std::future<void> sending;  // the last part's send
+      DeferredSubtree subtree;
+      job.send(0, kFromThread + thread, ready.s);
+      for (int32_t task = next_subtree(subtree); task >= 0; task = next_subtree(subtree)) {
+        job.send(0, kFromThread + thread, ready.s);
         SearchPart part;
         std::string records;
         bool complete;
@@ -222,9 +219,6 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
         sending = std::async(std::launch::async, [&job, thread, m = std::move(out.s)] {
           job.send(0, kFromThread + thread, m, MpiJob::Bulk);
         });
-        reply = MessageWriter();
-        reply.u8(kDone);
-        reply.i32(task);
       }
       if (sending.valid()) sending.get();
     }, tbb::simple_partitioner());

@@ -6,8 +6,8 @@
 //
 // Messages (little-endian; apps/mpi_job.h sends byte strings of any length):
 //   thread s of a rank -> rank 0, Control channel, tag kFromThread + s:
-//     u8 0                                       (ready for a first subtree)
-//     u8 1  i32 task                             (done with task: give me the next)
+//     u8 0      (one more subtree: sent before the first, then as each is begun, so that
+//                the next is there when the thread is free; a thread holds two at most)
 //   thread s of a rank -> rank 0, Bulk channel, tag kFromThread + s, sent while the thread
 //   searches its next subtree (one part of a thread in flight at a time):
 //     u8 1  i32 task  counts  part  u64 R  R bytes   (task searched: part as in
@@ -20,9 +20,9 @@
 //     i32 -1                                              (no more: the thread ends)
 //   rank 0 -> a rank searching a subtree, tag kStop: empty (rank 0 stopped: stop searching)
 //   a rank -> rank 0, tag kRankDone: empty (all its threads have ended, their parts sent)
-// Rank 0 answers requests before it takes a part in: a thread waits for its next subtree
-// only as long as a request takes, not behind the parts of the whole job (the replay of
-// 3-RPR at eps 0.1: bench/RESULTS.md, "Issue 30, fourth slice").
+// Rank 0 answers requests before it takes a part in: a thread's next subtree does not wait
+// behind the parts of the whole job (the replay of 3-RPR at eps 0.1: bench/RESULTS.md,
+// "Issue 30, fourth slice").
 #pragma once
 
 #include "model/model.h"
