@@ -140,7 +140,7 @@ void add_plot(CLI::App& app, Commands& c) {
 // differ from its checkpoint, and the model's `bisect` statement yields to --bisect.
 void record_given_options(Commands& c) {
   for (const char* name : {"MODEL", "--eps", "--prec", "--tau", "--bisect", "--all-links",
-                           "--no-cert", "--out", "--checkpoint"})
+                           "--no-cert", "--cert-format", "--out", "--checkpoint"})
     if (c.solve->count(name) > 0) c.solve_options.given.push_back(name);
 }
 

@@ -23,10 +23,11 @@ namespace {
 // Layout (integers and doubles little-endian; a string is a u64 length and its bytes):
 //   "aspects-checkpoint 2\n"  (1: parts in fixed-width fields)
 //   str version  str model_sha256  str model_text  str model_file  f64 eps  f64 tau
-//   i64 precision  str bisect  u8 all_links  u8 no_cert  i32 defer_depth
+//   i64 precision  str bisect  u8 all_links  u8 no_cert  u8 cert_format  i32 defer_depth
 //   f64 checkpoint_seconds  u32 nv  u32 p
 //   u8 top_done; when 1:
-//     part(top)  str top_records
+//     part(top)  str top_records  u32 M  M × (i64 offset  i32 task)   (format 3: where
+//     each deferred subtree's records go in top_records; format 2 marks them in the text)
 //     u32 D  D × (nv × (f64 lo  f64 hi)  i32 parent_split  i32 node)
 //     D × (u8 done; when 1: part  str records)
 //   32 bytes: SHA-256 of everything before
@@ -113,6 +114,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
   o.str(h.bisect);
   o.u8(h.all_links);
   o.u8(h.no_cert);
+  o.u8(uint8_t(h.cert_format));
   o.i32(h.defer_depth);
   o.f64(h.checkpoint_seconds);
   o.u32(h.nv);
@@ -121,6 +123,13 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
   if (st.top_done) {
     write_search_part(o, st.top, h.p);
     o.str(cert ? cert->records(-1) : std::string());
+    const std::vector<TreeRecordFile::Mark> marks =
+        cert ? cert->marks(-1) : std::vector<TreeRecordFile::Mark>();
+    o.u32(uint32_t(marks.size()));
+    for (const TreeRecordFile::Mark& m : marks) {
+      o.i64(m.offset);
+      o.i32(m.task);
+    }
     o.u32(uint32_t(st.deferred.size()));
     for (const DeferredSubtree& d : st.deferred) {
       for (const Interval& x : d.box) {
@@ -184,6 +193,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   h.bisect = in.str();
   h.all_links = in.u8();
   h.no_cert = in.u8();
+  h.cert_format = in.u8();
   h.defer_depth = in.i32();
   h.checkpoint_seconds = in.f64();
   h.nv = in.u32();
@@ -191,6 +201,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   if (h.nv == 0 || h.nv > 16 || h.p > 20) in.fail("bad sizes");
   if (h.precision < 24 || h.precision > 4096) in.fail("bad precision");
   if (h.defer_depth < -1 || h.defer_depth > 64) in.fail("bad cut depth");
+  if (h.cert_format != 2 && h.cert_format != 3) in.fail("bad certificate format");
   // The boxes below are intervals of the run's precision, as in the run that wrote them.
   set_working_precision(long(h.precision));
   if (sha256_hex(h.model_text) != h.model_sha256) in.fail("model text and hash differ");
@@ -199,6 +210,16 @@ Checkpoint read_checkpoint(const std::string& path) {
   if (st.top_done) {
     read_search_part(in, st.top, h.nv, h.p, UINT32_MAX);
     c.top_records = in.str();
+    const uint32_t marks = in.count(12);
+    for (uint32_t i = 0; i < marks; ++i) {
+      const int64_t offset = in.i64();
+      const int32_t task = in.i32();
+      const int64_t before = c.top_marks.empty() ? 0 : c.top_marks.back().first;
+      // In order, inside the records and before their 16-byte trailer.
+      if (offset < before || offset + 16 > int64_t(c.top_records.size()) || task < 0)
+        in.fail("bad deferred subtree mark");
+      c.top_marks.emplace_back(offset, task);
+    }
     const uint32_t D = in.count(16 * uint64_t(h.nv) + 9);
     st.deferred.resize(D);
     for (DeferredSubtree& d : st.deferred) {
@@ -223,6 +244,8 @@ Checkpoint read_checkpoint(const std::string& path) {
     for (const SearchNode& s : st.top.tree)
       if (s.fate == LeafFate::Deferred && !s.internal() && uint32_t(s.index) >= D)
         in.fail("bad deferred subtree");
+    for (const auto& [offset, task] : c.top_marks)
+      if (uint32_t(task) >= D) in.fail("bad deferred subtree mark");
   }
   if (!in.at_end()) in.fail("trailing bytes");
   return c;

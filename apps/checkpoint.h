@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "search_state.h"
@@ -33,6 +34,7 @@ struct CheckpointHeader {
   int64_t precision = 0;
   std::string bisect;
   bool all_links = false, no_cert = false;
+  int32_t cert_format = 2;  // the certificate's format version (2 text, 3 binary records)
   int32_t defer_depth = 0;
   double checkpoint_seconds = 0;  // the interval; a resumed run keeps it unless given
   uint32_t nv = 0, p = 0;         // variables and sign factors (sizes of the records)
@@ -42,6 +44,8 @@ struct Checkpoint {
   CheckpointHeader header;
   SearchState state;
   std::string top_records;           // certificate records (empty with no_cert)
+  // Format 3: where in top_records each deferred subtree's records go (byte offset, task).
+  std::vector<std::pair<int64_t, int32_t>> top_marks;
   std::vector<std::string> records;  // per subtree; empty when not done
 };
 

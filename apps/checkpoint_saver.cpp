@@ -21,6 +21,7 @@ void CheckpointSaver::attach(const SolveOptions& o, const Model& model, AspectsC
   header_.bisect = o.bisect;
   header_.all_links = o.all_links;
   header_.no_cert = o.no_cert;
+  header_.cert_format = o.cert_format;
   header_.defer_depth = cfg.defer_depth;
   header_.checkpoint_seconds = o.checkpoint;
   header_.nv = uint32_t(model.vars.size());

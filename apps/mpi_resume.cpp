@@ -9,7 +9,7 @@ namespace {
 constexpr int kResumedRun = 12;
 
 // u8 ok; when 1: f64 eps  i64 prec  f64 tau  str bisect  u8 all_links  u8 no_cert
-//               str model_text  str model_name
+//               u8 cert_format  str model_text  str model_name
 std::string run_message(const SolveOptions& o, const ResumedModel* model) {
   MessageWriter w;
   w.u8(model != nullptr);
@@ -20,6 +20,7 @@ std::string run_message(const SolveOptions& o, const ResumedModel* model) {
   w.str(o.bisect);
   w.u8(o.all_links);
   w.u8(o.no_cert);
+  w.u8(uint8_t(o.cert_format));
   w.str(model->text);
   w.str(model->name);
   return w.s;
@@ -47,6 +48,7 @@ std::optional<ResumedModel> share_resumed_run(MpiJob& job, SolveOptions& o,
   o.bisect = in.str();
   o.all_links = in.u8();
   o.no_cert = in.u8();
+  o.cert_format = in.u8();
   ResumedModel m;
   m.text = in.str();
   m.name = in.str();

@@ -77,9 +77,6 @@ void validate_solve_options(const SolveOptions& o) {
 void complete_options(SolveOptions& o) {
   if (o.checkpoint > 0 && o.out_dir.empty())
     throw UsageError("--checkpoint needs --out DIR (the checkpoint is written there)");
-  // The checkpoint does not record the format, which changes the tree (proofs/certificate_grid.h).
-  if (o.cert_format == 3 && (o.checkpoint > 0 || !o.resume_dir.empty()))
-    throw UsageError("--cert-format 3 does not work with --checkpoint or --resume yet");
   if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
 }
 

@@ -60,6 +60,9 @@ void adopt_checkpoint(SolveOptions& o, const CheckpointHeader& h) {
   bool all_links = h.all_links, no_cert = h.no_cert;
   adopt(o, "--all-links", o.all_links, all_links, flag(o.all_links), flag(all_links));
   adopt(o, "--no-cert", o.no_cert, no_cert, flag(o.no_cert), flag(no_cert));
+  int format = h.cert_format;
+  adopt(o, "--cert-format", o.cert_format, format, std::to_string(o.cert_format),
+        std::to_string(format));
   namespace fs = std::filesystem;
   if (o.was_given("--out") && fs::weakly_canonical(o.out_dir) != fs::weakly_canonical(o.resume_dir))
     throw UsageError("--out " + o.out_dir + " differs from --resume " + o.resume_dir +
@@ -102,7 +105,9 @@ std::unique_ptr<Checkpoint> open_resumed_run(SolveOptions& o) {
 void resume_search(Checkpoint& resumed, CertificateWriter* cert, AspectsConfig& cfg) {
   SearchState& st = resumed.state;
   if (cert && st.top_done) {
-    cert->restore(-1, resumed.top_records);
+    std::vector<TreeRecordFile::Mark> marks;
+    for (const auto& [offset, task] : resumed.top_marks) marks.push_back({long(offset), task});
+    cert->restore(-1, resumed.top_records, std::move(marks));
     for (size_t k = 0; k < st.deferred.size(); ++k)
       if (st.done[k]) cert->restore(int32_t(k), resumed.records[k]);
   }

@@ -122,7 +122,12 @@ std::string CertificateWriter::records(int32_t task) {
   return text;
 }
 
-void CertificateWriter::restore(int32_t task, const std::string& records) {
+std::vector<TreeRecordFile::Mark> CertificateWriter::marks(int32_t task) const {
+  return (task < 0 ? *top_ : *tasks_.at(task)).marks();
+}
+
+void CertificateWriter::restore(int32_t task, const std::string& records,
+                                std::vector<TreeRecordFile::Mark> marks) {
   std::unique_ptr<TreeRecordFile>* slot = &top_;
   if (task >= 0) {
     if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);
@@ -135,6 +140,7 @@ void CertificateWriter::restore(int32_t task, const std::string& records) {
     throw std::runtime_error("cannot write " + spool + ": " + std::strerror(errno ? errno : EIO));
   *slot = std::make_unique<TreeRecordFile>(spool, spool_size_,
                                            spool_size_ + long(records.size()), format_ == 3);
+  (*slot)->set_marks(std::move(marks));
   spool_size_ += long(records.size());
 }
 

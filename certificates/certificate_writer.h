@@ -55,6 +55,7 @@ class TreeRecordFile : public TreeSink {
     int32_t task;
   };
   const std::vector<Mark>& marks() const { return marks_; }
+  void set_marks(std::vector<Mark> marks) { marks_ = std::move(marks); }
 
  private:
   void signs(const int8_t* s);
@@ -91,7 +92,10 @@ class CertificateWriter : public CertificateSink {
   // and a finished part's records put back before a resumed search (instead of searching
   // it: then neither top() nor subtree(task) is called for it).
   std::string records(int32_t task);
-  void restore(int32_t task, const std::string& records) override;
+  // Format 3: where its deferred subtrees' records go in records(task).
+  std::vector<TreeRecordFile::Mark> marks(int32_t task) const;
+  void restore(int32_t task, const std::string& records) override { restore(task, records, {}); }
+  void restore(int32_t task, const std::string& records, std::vector<TreeRecordFile::Mark> marks);
 
   // Links, CSNCs and claims; then closes and renames the file into place.
   void finish(const Model& model, const AspectsResult& result);

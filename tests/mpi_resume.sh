@@ -14,7 +14,9 @@
 #   cut_depth  P = 40 of 1 thread (the tree cut at depth 14: 256 subtrees a thread,
 #              apps/mpi_subtrees.h) stopped by SIGTERM to rank 0: the checkpoint records
 #              14; one process resumes it and stops at once (--max-boxes 1): its
-#              checkpoint still says 12; resumed with P = 2
+#              checkpoint still says 14; resumed with P = 2
+# SOLVE_ARGS (environment): more options for the runs that start (say --cert-format 3);
+# a resumed run takes them from its checkpoint.
 #
 # Seen failing, each once on purpose, then restored:
 #  - a part another rank stopped counted as finished (search_with_remote,
@@ -37,6 +39,13 @@ mpi() {
   shift
   "$mpirun" --oversubscribe --bind-to none -n "$p" -x TMPDIR -x OMPI_ALLOW_RUN_AS_ROOT \
     -x OMPI_ALLOW_RUN_AS_ROOT_CONFIRM "$aspects" solve "$@" --threads 1 --quiet
+}
+# start P ARGS...: mpi, for a run that starts (not a resumed one), with SOLVE_ARGS.
+start() {
+  p=$1
+  shift
+  # shellcheck disable=SC2086
+  mpi "$p" "$@" ${SOLVE_ARGS:-}
 }
 # wait_for FILE: until it exists (60 s at most).
 wait_for() {
@@ -110,7 +119,7 @@ expect_stopped() {
 # signal_rank RANK P DIR: starts P processes with checkpoints, SIGTERM to RANK once one is
 # written; leaves the job's status in $status.
 signal_rank() {
-  mpi "$2" "$model" --eps "$eps" --checkpoint 0.1 --out "$3" > "$work/log" 2>&1 &
+  start "$2" "$model" --eps "$eps" --checkpoint 0.1 --out "$3" > "$work/log" 2>&1 &
   job=$!
   wait_for "$3/checkpoint" || { kill "$job"; fail "P = $2: no checkpoint written"; }
   if [ "$1" = 0 ]; then pid=$(rank0_pid "$3"); else pid=$(worker_pid "$1"); fi
@@ -120,7 +129,8 @@ signal_rank() {
   status=$?
 }
 
-"$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --out "$work/ref" ||
+# shellcheck disable=SC2086
+"$aspects" solve "$model" --eps "$eps" --threads 2 --quiet --out "$work/ref" ${SOLVE_ARGS:-} ||
   fail "the uninterrupted single process exited $?"
 
 case $case_ in
