@@ -83,7 +83,7 @@ def skip_str():
 for _ in range(4): skip_str()   # version, model_sha256, model_text, model_file
 at += 8 + 8 + 8                 # eps, tau, precision
 skip_str()                      # bisect
-at += 2                         # all_links, no_cert
+at += 3                         # all_links, no_cert, cert_format
 print(struct.unpack_from("<i", b, at)[0])
 PY
 }
