@@ -142,8 +142,8 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, const 
     for (size_t k = 0; k < st.deferred.size(); ++k) {
       o.u8(done[k]);
       if (!done[k]) continue;
-      if (k < st.encoded.size() && !st.encoded[k].empty())  // as another rank encoded it
-        o.bytes(st.encoded[k].data(), st.encoded[k].size());
+      if (k < st.encoded.size() && !st.encoded[k].bytes.empty())  // as another rank encoded it
+        o.bytes(st.encoded[k].bytes.data(), st.encoded[k].bytes.size());
       else
         write_search_part(o, st.parts[k], h.p);
       o.str(cert ? cert->records(int32_t(k)) : std::string());

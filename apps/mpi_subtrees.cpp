@@ -116,8 +116,9 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     const int32_t task = in.i32();
     if (owed.erase({sender, tag - kFromThread, task}) != 1) in.fail("a subtree it was not given");
     ReturnedPart part;
-    for (long* x : {&part.nodes, &part.solutions, &part.undecided, &part.discarded})
+    for (long* x : {&part.nodes, &part.solutions, &part.undecided, &part.discarded, &part.boxes})
       *x = long(in.i64());
+    if (part.nodes < 0 || part.boxes < 0) in.fail("bad counts");
     const uint64_t part_bytes = in.u64();
     if (part_bytes > in.left()) in.fail("truncated");
     part.bytes.reserve(8 + part_bytes);
@@ -208,7 +209,8 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
         out.i32(task);
         ReturnedPart counts;
         count_leaves(part, counts);
-        for (long x : {counts.nodes, counts.solutions, counts.undecided, counts.discarded})
+        for (long x :
+             {counts.nodes, counts.solutions, counts.undecided, counts.discarded, counts.boxes})
           out.i64(x);
         write_search_part(out, part, uint32_t(factors.size()));
         out.u64(records.size());

@@ -13,8 +13,8 @@
 //     u8 1  i32 task  counts  part  u64 R  R bytes   (task searched: part as in
 //                                                   apps/search_part_codec.h, its records)
 //     u8 2  i32 task  counts  part  u64 R  R bytes   (task stopped: a partial part)
-//     counts: i64 nodes, solutions, undecided, discarded (its leaves: progress before the
-//     part is decoded, at the merge)
+//     counts: i64 nodes, solutions, undecided, discarded, boxes (progress, and the merge's
+//     room, before the part is decoded as the merge grafts it)
 //   rank 0 -> thread s, tag kToThread + s:
 //     i32 task  i32 parent_split  nv × (f64 lo  f64 hi)   (search this)
 //     i32 -1                                              (no more: the thread ends)

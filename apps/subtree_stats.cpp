@@ -46,9 +46,9 @@ std::pair<long, double> encode_and_decode(const SearchPart& part, size_t deferre
   return {long(w.s.size()), seconds};
 }
 
-// The message of mpi_subtrees.cpp: kind u8, task i32, four u64 counts, the part, u64 record
+// The message of mpi_subtrees.cpp: kind u8, task i32, five u64 counts, the part, u64 record
 // count, records.
-constexpr long kMessageOverhead = 1 + 4 + 4 * 8 + 8;
+constexpr long kMessageOverhead = 1 + 4 + 5 * 8 + 8;
 
 std::string seconds_text(double s) {
   if (s < 0) return "";

@@ -23,6 +23,13 @@ struct SearchPart {
   int32_t next_leaf = 0;  // merge cursor: leaves are taken in their local order
 };
 
+// A part in the bytes another process sent it in, with its sizes (the merge reserves room
+// for everything before it decodes anything).
+struct EncodedPart {
+  std::string bytes;
+  long nodes = 0, boxes = 0;
+};
+
 struct SearchState {
   bool top_done = false;                  // the top was searched to the end
   SearchPart top;
@@ -30,8 +37,8 @@ struct SearchState {
   std::vector<uint8_t> done;              // per subtree: searched to the end (parts[k] valid)
   std::vector<SearchPart> parts;
   // Per subtree: a part another process sent back, still in the bytes it came in (see
-  // pipeline/remote_subtrees.h; empty: parts[k] holds it), until the search is merged.
-  std::vector<std::string> encoded;
+  // pipeline/remote_subtrees.h; empty: parts[k] holds it), until the merge grafts it.
+  std::vector<EncodedPart> encoded;
 };
 
 }  // namespace aspects

@@ -4,11 +4,15 @@
 
 namespace aspects {
 
-void PartMerger::merge(SearchPart& top) {
+void PartMerger::merge(SearchPart& top, std::vector<EncodedPart>* encoded,
+                       const Decode& decode) {
+  encoded_ = encoded;
+  decode_ = decode;
   size_t nodes = top.tree.size(), boxes = top.boxes.size();
-  for (const SearchPart& part : parts_) {
-    nodes += part.tree.size();
-    boxes += part.boxes.size();
+  for (size_t k = 0; k < parts_.size(); ++k) {
+    const bool bytes = encoded_ && k < encoded_->size() && !(*encoded_)[k].bytes.empty();
+    nodes += bytes ? size_t((*encoded_)[k].nodes) : parts_[k].tree.size();
+    boxes += bytes ? size_t((*encoded_)[k].boxes) : size_t(parts_[k].boxes.size());
   }
   tree_.reserve(nodes);
   boxes_.reserve(boxes);
@@ -25,6 +29,13 @@ void PartMerger::graft(SearchPart& part, int32_t i, int32_t id) {
   const SearchNode src = part.tree[i];
   if (src.fate == LeafFate::Deferred && !src.internal()) {
     SearchPart& sub = parts_[src.index];
+    if (encoded_ && size_t(src.index) < encoded_->size()) {
+      std::string& bytes = (*encoded_)[size_t(src.index)].bytes;
+      if (!bytes.empty()) {
+        decode_(src.index, bytes, sub);
+        std::string().swap(bytes);
+      }
+    }
     graft(sub, 0, id);
     release(sub);  // each part is grafted once, whole
     return;

@@ -3,6 +3,8 @@
 // records, whatever the number of threads that searched them.
 #pragma once
 
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "search_state.h"
@@ -14,15 +16,23 @@ class PartMerger {
   PartMerger(std::vector<SearchPart>& parts, OutputBoxes& boxes, std::vector<SearchNode>& tree)
       : parts_(parts), boxes_(boxes), tree_(tree) {}
 
+  // Decodes encoded part k's bytes into the part (pipeline/remote_subtrees.h).
+  using Decode = std::function<void(int32_t k, const std::string& bytes, SearchPart& part)>;
+
   // Grafts every part below `top`'s deferred leaves. Room for everything is reserved first,
-  // and each part's arrays are freed once grafted, so the search is never held twice.
-  void merge(SearchPart& top);
+  // and each part's arrays are freed once grafted, so the search is never held twice. A part
+  // with bytes in `encoded` (may be null) is decoded just before it is grafted, its bytes
+  // then freed.
+  void merge(SearchPart& top, std::vector<EncodedPart>* encoded = nullptr,
+             const Decode& decode = {});
 
  private:
   void graft(SearchPart& part, int32_t i, int32_t id);
   static void release(SearchPart& part);
 
   std::vector<SearchPart>& parts_;
+  std::vector<EncodedPart>* encoded_ = nullptr;
+  Decode decode_;
   OutputBoxes& boxes_;
   std::vector<SearchNode>& tree_;
 };

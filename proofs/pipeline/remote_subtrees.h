@@ -29,13 +29,15 @@ enum class PartOutcome {
 struct ReturnedPart {
   SearchPart part;    // decoded, when `bytes` is empty
   std::string bytes;  // or encoded
-  // Its nodes, and the leaves of each fate, before it is decoded (progress only).
-  long nodes = 0, solutions = 0, undecided = 0, discarded = 0;
+  // Its nodes, the leaves of each fate (progress) and its output boxes (the merge's room),
+  // before it is decoded.
+  long nodes = 0, solutions = 0, undecided = 0, discarded = 0, boxes = 0;
 };
 
 // Counts `part`'s nodes and the leaves of each fate into `into`.
 inline void count_leaves(const SearchPart& part, ReturnedPart& into) {
   into.nodes = long(part.tree.size());
+  into.boxes = long(part.boxes.size());
   into.solutions = into.undecided = into.discarded = 0;
   for (const SearchNode& node : part.tree) {
     if (node.internal()) continue;
@@ -55,7 +57,7 @@ class RemoteSubtrees {
                                       std::string&& records)>;
 
   // The part of subtree `task` from the bytes it came back in (ReturnedPart::bytes), with
-  // `factors` signs a box. Called by several threads at once, after serve() has returned.
+  // `factors` signs a box. Called after serve() has returned, as the merge grafts it.
   // Throws when the bytes are not such a part.
   virtual void decode(int32_t task, const std::string& bytes, int factors,
                       SearchPart& part) const {

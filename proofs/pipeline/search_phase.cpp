@@ -116,19 +116,6 @@ void count_for_progress(ReturnedPart& part, const Box& cell, SearchStats& stats)
   if (!stats.domain_width.empty()) stats.add_decided(stats.share(cell));
 }
 
-// The parts still encoded (another process's, pipeline/remote_subtrees.h), decoded on all
-// threads.
-void decode_returned(const RemoteSubtrees& remote, int factors, SearchState& st,
-                     Parallel& parallel) {
-  parallel.arena().execute([&] {
-    tbb::parallel_for(size_t(0), st.encoded.size(), [&](size_t k) {
-      if (st.encoded[k].empty()) return;
-      remote.decode(int32_t(k), st.encoded[k], factors, st.parts[k]);
-      std::string().swap(st.encoded[k]);
-    });
-  });
-}
-
 // The subtrees shared with other processes (config.remote): this process's threads and the
 // remote server take them from one queue. A sink is opened when its subtree is taken (a
 // large job has more subtrees than a process may hold files open).
@@ -151,7 +138,7 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
             if (config.subtree_observer.returned)
               config.subtree_observer.returned(k, part, records.size());
             st.parts[k] = std::move(part.part);
-            st.encoded[k] = std::move(part.bytes);
+            st.encoded[k] = {std::move(part.bytes), part.nodes, part.boxes};
             std::lock_guard<std::mutex> g(cert_lock);
             if (cert) cert->restore(k, records);
             if (outcome == PartOutcome::Complete) checkpoints.mark_done(k);
@@ -278,8 +265,13 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
 
   SearchOutcome out;
   out.boxes = OutputBoxes(int(model.vars.size()), int(factors.size()));
-  if (config.remote) decode_returned(*config.remote, int(factors.size()), st, parallel);
-  PartMerger(st.parts, out.boxes, out.tree).merge(st.top);
+  // Another process's parts are decoded one at a time as they are grafted: never all of
+  // them held twice, encoded and decoded.
+  const int p = int(factors.size());
+  PartMerger(st.parts, out.boxes, out.tree)
+      .merge(st.top, &st.encoded, [&](int32_t k, const std::string& bytes, SearchPart& part) {
+        config.remote->decode(k, bytes, p, part);
+      });
   out.diagnostics.add(st.top.diagnostics);
   for (const auto& part : st.parts) out.diagnostics.add(part.diagnostics);
   st = SearchState();  // merged: a resumed state is consumed
