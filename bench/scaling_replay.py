@@ -23,7 +23,7 @@ What is replayed (apps/mpi_subtrees.cpp, proofs/pipeline/search_phase.cpp):
     while its part queues at rank 0; without, it waits until rank 0 has taken the part in.
     Rank 0's serving thread takes one part at a time: it receives it at --bandwidth bytes/s,
     decodes it (measured; with --decode-at-merge, as built, it keeps the bytes and the merge
-    decodes them on rank 0's --threads, added to the later phases) and writes its records
+    decodes each part as it grafts it, added to the later phases) and writes its records
     to a file at --disk bytes/s (CertificateWriter::restore); each message waits --latency
     seconds on top (the ranks poll, sleeping up to 1 ms). --free-ingest makes all of this
     free: what the scheduler alone would give. The search ends when the last part is in;
@@ -254,8 +254,8 @@ def table(label, work, later, a, out):
     decode = a.part_scale * sum(work.decode)
     ingest = (a.part_scale * sum(work.part_bytes) / a.bandwidth +
               (0 if a.decode_at_merge else decode) + records / a.bandwidth + records / a.disk)
-    if a.decode_at_merge:  # the merge decodes on rank 0's threads
-        later += decode / a.threads
+    if a.decode_at_merge:  # the merge decodes each part as it grafts it, on one thread
+        later += decode
     out.append(f"\n{label}: {work.processed:,} boxes processed, {len(work.paths):,} subtrees "
                f"recorded at depth {work.depth}; search work {sum(work.cpu) + work.top_cpu:,.1f} "
                f"CPU s; later phases {later:,.1f} s on rank 0; {a.threads} thread(s) per rank; "
@@ -338,8 +338,8 @@ def main():
                     help="the order subtrees are handed out in")
     ap.add_argument("--blocks", type=int, default=256, help="--order heaviest's runs")
     ap.add_argument("--decode-at-merge", action="store_true",
-                    help="rank 0 keeps parts encoded and decodes them at the merge, on its "
-                    "--threads (added to the later phases)")
+                    help="rank 0 keeps parts encoded and decodes each as the merge grafts it "
+                    "(added to the later phases)")
     ap.add_argument("--part-scale", type=float, default=1.0,
                     help="parts this many times the recorded bytes and decode seconds")
     ap.add_argument("--scenario", default="", help="appended to every label")
