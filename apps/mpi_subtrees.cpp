@@ -9,7 +9,6 @@
 #include <future>
 #include <iostream>
 #include <iterator>
-#include <map>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -105,7 +104,7 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     job_.send(sender, kToThread + thread, task_message(next, deferred));
     return false;
   };
-  // Kept as the bytes it came in: decode() reads it at the merge, on all threads.
+  // Kept as the bytes it came in: decode() reads it as the merge grafts it.
   auto take_part = [&] {
     int sender = 0, tag = 0;
     const std::string msg =
