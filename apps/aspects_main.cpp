@@ -99,7 +99,7 @@ void add_solve(CLI::App& app, Commands& c) {
                     "seconds, message bytes), for the scaling study; the result is unchanged");
   solve->add_option("--cut-depth", so.cut_depth,
                     "cut the search tree into subtrees at this depth (1-16; default 8, in an "
-                    "MPI job deep enough for 64 subtrees a thread); the result is unchanged");
+                    "MPI job deep enough for 256 subtrees a thread); the result is unchanged");
 }
 
 void add_query(CLI::App& app, Commands& c) {
