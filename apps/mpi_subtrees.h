@@ -20,9 +20,8 @@
 //     i32 -1                                              (no more: the thread ends)
 //   rank 0 -> a rank searching a subtree, tag kStop: empty (rank 0 stopped: stop searching)
 //   a rank -> rank 0, tag kRankDone: empty (all its threads have ended, their parts sent)
-// Rank 0 answers requests before it takes a part in: a thread's next subtree does not wait
-// behind the parts of the whole job (the replay of 3-RPR at eps 0.1: bench/RESULTS.md,
-// "Issue 30, fourth slice").
+// Rank 0 answers requests before it takes a part in, so that a thread's next subtree does
+// not wait behind the parts of the whole job.
 #pragma once
 
 #include "model/model.h"
@@ -57,11 +56,10 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& c
                                bool certificate);
 
 // The depth at which rank 0 cuts the tree into subtrees for P processes of T threads: at
-// least 8 (a single process's cut), and deep enough for 256 subtrees a thread, as nearly all
-// the work sits in a few subtrees near the singular surfaces (the replay of 3-RPR at eps 0.1
-// on 256 ranks, rank 0's intake free: 79 % search efficiency at 64 subtrees a thread, 92 % at
-// 256; bench/RESULTS.md, "Issue 30, fourth slice"). The result does not depend on it: a
-// subtree is searched from its box alone.
+// least 8 (a single process's cut), and deep enough for 256 subtrees a thread: nearly all
+// the work sits in a few subtrees near the singular surfaces, and smaller pieces keep the
+// last ones handed out short. The result does not depend on it: a subtree is searched from
+// its box alone.
 int defer_depth_for(int processes, int threads);
 
 }  // namespace aspects

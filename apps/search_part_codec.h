@@ -1,9 +1,8 @@
 // One part of the search (proofs/search_state.h: a tree, its output boxes and the
 // diagnostics) as bytes: the encoding of the checkpoint (apps/checkpoint.*) and of the parts
-// an MPI job's ranks send back (apps/mpi_subtrees.*), where rank 0 takes every part of the
-// job in on one thread: compact, as its size bounds the job's speed-up (bench/RESULTS.md,
-// "Issue 30, fourth slice": 72 bytes a box processed in fixed-width fields, 28 now on
-// 3-RPR).
+// an MPI job's ranks send back (apps/mpi_subtrees.*). Compact, because rank 0 takes every
+// part of the job in through one thread and one link, and that intake bounds the job's
+// speed-up.
 //
 // part = u64 L, then L bytes:
 //   varint T, then the T nodes depth first, left child before right (the order the search

@@ -10,9 +10,9 @@ void PartMerger::merge(SearchPart& top, std::vector<EncodedPart>* encoded,
   decode_ = decode;
   size_t nodes = top.tree.size(), boxes = top.boxes.size();
   for (size_t k = 0; k < parts_.size(); ++k) {
-    const bool bytes = encoded_ && k < encoded_->size() && !(*encoded_)[k].bytes.empty();
-    nodes += bytes ? size_t((*encoded_)[k].nodes) : parts_[k].tree.size();
-    boxes += bytes ? size_t((*encoded_)[k].boxes) : size_t(parts_[k].boxes.size());
+    const EncodedPart* e = still_encoded(k);
+    nodes += e ? size_t(e->nodes) : parts_[k].tree.size();
+    boxes += e ? size_t(e->boxes) : size_t(parts_[k].boxes.size());
   }
   tree_.reserve(nodes);
   boxes_.reserve(boxes);
@@ -29,12 +29,9 @@ void PartMerger::graft(SearchPart& part, int32_t i, int32_t id) {
   const SearchNode src = part.tree[i];
   if (src.fate == LeafFate::Deferred && !src.internal()) {
     SearchPart& sub = parts_[src.index];
-    if (encoded_ && size_t(src.index) < encoded_->size()) {
-      std::string& bytes = (*encoded_)[size_t(src.index)].bytes;
-      if (!bytes.empty()) {
-        decode_(src.index, bytes, sub);
-        std::string().swap(bytes);
-      }
+    if (EncodedPart* e = still_encoded(size_t(src.index))) {
+      decode_(src.index, e->bytes, sub);
+      std::string().swap(e->bytes);
     }
     graft(sub, 0, id);
     release(sub);  // each part is grafted once, whole
@@ -52,6 +49,11 @@ void PartMerger::graft(SearchPart& part, int32_t i, int32_t id) {
     if (src.index != part.next_leaf++) throw std::logic_error("merge: leaves out of order");
     tree_[id].index = boxes_.push_copy(part.boxes, src.index);
   }
+}
+
+EncodedPart* PartMerger::still_encoded(size_t k) const {
+  if (!encoded_ || k >= encoded_->size() || (*encoded_)[k].bytes.empty()) return nullptr;
+  return &(*encoded_)[k];
 }
 
 // The merged arrays of a part; its diagnostics stay.

@@ -29,6 +29,7 @@ class PartMerger {
  private:
   void graft(SearchPart& part, int32_t i, int32_t id);
   static void release(SearchPart& part);
+  EncodedPart* still_encoded(size_t k) const;  // part k's bytes, if not decoded yet
 
   std::vector<SearchPart>& parts_;
   std::vector<EncodedPart>* encoded_ = nullptr;

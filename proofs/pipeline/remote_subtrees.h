@@ -23,9 +23,9 @@ enum class PartOutcome {
 };
 
 // A part searched by another process, as it came back: decoded, or (an MPI job) still the
-// bytes it travelled in, which RemoteSubtrees::decode reads when the search is merged, on
-// all of this process's threads. Taking a part in is then a copy: one thread takes in the
-// parts of the whole job (bench/RESULTS.md, "Issue 30, fourth slice").
+// bytes it travelled in, which RemoteSubtrees::decode reads as the merge grafts it. Taking
+// a part in is then a copy, which matters because one thread takes in the parts of the
+// whole job.
 struct ReturnedPart {
   SearchPart part;    // decoded, when `bytes` is empty
   std::string bytes;  // or encoded

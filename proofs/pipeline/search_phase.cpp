@@ -116,9 +116,33 @@ void count_for_progress(ReturnedPart& part, const Box& cell, SearchStats& stats)
   if (!stats.domain_width.empty()) stats.add_decided(stats.share(cell));
 }
 
+// Deferred subtree k searched by this process. Its certificate sink is opened only now: a
+// file each, and a deep cut makes more subtrees than a process may hold files open.
+// `cert_lock` guards the writer's list of subtrees, which grows as they are taken and which
+// a checkpoint reads.
+void search_here(int32_t k, const Model& model, const AspectsConfig& config,
+                 const std::vector<Factor>& factors, SearchState& st, SearchStats& stats,
+                 const std::function<void()>& tick, Checkpointer& checkpoints,
+                 std::mutex& cert_lock) {
+  TreeSink* sink = nullptr;
+  if (config.certificate) {
+    std::lock_guard<std::mutex> g(cert_lock);
+    sink = config.certificate->subtree(k, st.deferred[k].box);
+  }
+  PartClock clock;
+  if (search_part(model, config, factors, st.deferred[k].box, st.deferred[k].parent_split,
+                  st.parts[k], sink, stats, tick, -1, nullptr))
+    checkpoints.mark_done(size_t(k));
+  if (config.subtree_observer.searched_here)
+    config.subtree_observer.searched_here(k, st.parts[k], clock.work());
+  if (config.checkpoint_seconds > 0) {
+    std::lock_guard<std::mutex> g(cert_lock);
+    checkpoints.write(false);
+  }
+}
+
 // The subtrees shared with other processes (config.remote): this process's threads and the
-// remote server take them from one queue. A sink is opened when its subtree is taken (a
-// large job has more subtrees than a process may hold files open).
+// remote server take them from one queue.
 void search_with_remote(const Model& model, const AspectsConfig& config,
                         const std::vector<Factor>& factors, SearchState& st, SearchStats& stats,
                         const std::function<void()>& tick, Parallel& parallel,
@@ -126,8 +150,7 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
   const long prec = working_precision();
   SubtreeQueue queue(st.done);
   CertificateSink* cert = config.certificate;
-  // The writer's list of subtrees grows as they are taken; a checkpoint reads it.
-  std::mutex cert_lock;
+  std::mutex cert_lock;  // see search_here
   std::exception_ptr remote_error, local_error;
   std::thread server([&] {
     try {
@@ -154,24 +177,8 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
     parallel.arena().execute([&] {
       tbb::parallel_for(0, std::max(1, config.threads), [&](int) {
         set_working_precision(prec);  // MPFR's default precision is per thread
-        for (int32_t k; (k = queue.claim()) >= 0;) {
-          TreeSink* sink = nullptr;
-          if (cert) {
-            std::lock_guard<std::mutex> g(cert_lock);
-            sink = cert->subtree(k, st.deferred[k].box);
-          }
-          PartClock clock;
-          if (search_part(model, config, factors, st.deferred[k].box,
-                          st.deferred[k].parent_split, st.parts[k], sink, stats, tick, -1,
-                          nullptr))
-            checkpoints.mark_done(k);
-          if (config.subtree_observer.searched_here)
-            config.subtree_observer.searched_here(k, st.parts[k], clock.work());
-          if (config.checkpoint_seconds > 0) {
-            std::lock_guard<std::mutex> g(cert_lock);  // the writer's list may not grow meanwhile
-            checkpoints.write(false);
-          }
-        }
+        for (int32_t k; (k = queue.claim()) >= 0;)
+          search_here(k, model, config, factors, st, stats, tick, checkpoints, cert_lock);
       }, tbb::simple_partitioner());
     });
   } catch (...) {
@@ -220,41 +227,23 @@ SearchOutcome search_phase(const Model& model, const AspectsConfig& config,
                               cert ? cert->top() : nullptr, stats, tick, config.defer_depth,
                               &st.deferred);
     st.parts.resize(st.deferred.size());
-    st.encoded.resize(st.deferred.size());
     st.done.assign(st.deferred.size(), 0);
     if (config.subtree_observer.top_searched)
       config.subtree_observer.top_searched(st, top_clock.work());
   }
   check_resumed(st, factors.size());
-  st.encoded.resize(st.deferred.size());  // a resumed state holds decoded parts only
+  st.encoded.resize(st.deferred.size());  // a fresh or resumed state holds decoded parts only
   if (config.resume && st.top_done) stats.resumed_share = resumed_share(st, stats);
   Checkpointer checkpoints(config, st);
   if (config.remote) {
     search_with_remote(model, config, factors, st, stats, tick, parallel, checkpoints);
   } else {
-    // A sink is opened when its subtree is taken, as in search_with_remote: a file each,
-    // and --cut-depth 16 makes 65,536 subtrees (seen failing: "cannot write" when they
-    // were all opened first, past the limit on open files).
-    std::mutex cert_lock;  // the writer's list of subtrees grows; a checkpoint reads it
+    std::mutex cert_lock;  // see search_here
     parallel.arena().execute([&] {
       tbb::parallel_for(size_t(0), st.deferred.size(), [&](size_t k) {
         if (st.done[k]) return;
         set_working_precision(prec);  // MPFR's default precision is per thread
-        TreeSink* sink = nullptr;
-        if (cert) {
-          std::lock_guard<std::mutex> g(cert_lock);
-          sink = cert->subtree(int32_t(k), st.deferred[k].box);
-        }
-        PartClock clock;
-        if (search_part(model, config, factors, st.deferred[k].box, st.deferred[k].parent_split,
-                        st.parts[k], sink, stats, tick, -1, nullptr))
-          checkpoints.mark_done(k);
-        if (config.subtree_observer.searched_here)
-          config.subtree_observer.searched_here(int32_t(k), st.parts[k], clock.work());
-        if (config.checkpoint_seconds > 0) {
-          std::lock_guard<std::mutex> g(cert_lock);
-          checkpoints.write(false);
-        }
+        search_here(int32_t(k), model, config, factors, st, stats, tick, checkpoints, cert_lock);
       }, tbb::simple_partitioner());
     });
   }
