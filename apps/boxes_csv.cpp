@@ -1,6 +1,6 @@
 #include "boxes_csv.h"
 
-#include <cstdio>
+#include <charconv>
 
 #include "io/atomic_file.h"
 
@@ -8,10 +8,13 @@ namespace aspects {
 
 namespace {
 
-std::string fmt_double(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);  // round-trips exactly
-  return buf;
+// The shortest decimal that reads back as x (std::to_chars): exact as %.17g is, and much
+// faster; at small eps this file is tens of gigabytes, and its thread was the last of the
+// outputs to finish.
+void append_double(double x, std::string& buf) {
+  char text[32];
+  const std::to_chars_result r = std::to_chars(text, text + sizeof text, x);
+  buf.append(text, r.ptr);
 }
 
 std::string header(const Model& m) {
@@ -31,9 +34,9 @@ void append_row(const AspectsResult& r, int b, std::string& buf) {
   buf += c >= 0 && c < r.filtered ? ",1" : ",0";
   for (int v = 0; v < boxes.nv(); ++v) {
     buf += ',';
-    buf += fmt_double(boxes.lo(b, v));
+    append_double(boxes.lo(b, v), buf);
     buf += ',';
-    buf += fmt_double(boxes.hi(b, v));
+    append_double(boxes.hi(b, v), buf);
   }
   // Why a box stayed undecided: `constraint` (on the boundary of an additional
   // constraint, the paper's blue boxes) or `singular` (P1 or P2 failed, red and

@@ -112,6 +112,23 @@ def test_out_writes_the_command_lines_files(rprpr):
     assert not [f for f in os.listdir(py_dir) if "tmp" in f]
 
 
+def test_boxes_csv_ends_are_the_solvers_doubles(rprpr):
+    """boxes.csv's decimal ends read back as exactly the doubles the index holds (shortest
+    round-trip printing; seen failing when printed with 15 significant digits)."""
+    cli_dir, _, r, _ = rprpr
+    with open(os.path.join(cli_dir, "boxes.csv")) as f:
+        rows = [line.rstrip("\n").split(",") for line in f][1:]
+    assert len(rows) == len(r.ids)
+    ends = np.array([[float(t) for t in row[4:12]] for row in rows])
+    lower, upper = ends[:, 0::2], ends[:, 1::2]
+    sol = r.status == aspects.SOLUTION
+    assert sol.sum() > 100
+    assert np.array_equal(lower[sol], r.lower[sol]) and np.array_equal(upper[sol], r.upper[sol])
+    # The index keeps an undecided box's pose part only.
+    assert np.array_equal(lower[~sol][:, :2], r.lower[~sol][:, :2])
+    assert np.array_equal(upper[~sol][:, :2], r.upper[~sol][:, :2])
+
+
 def test_load_equals_solve(rprpr):
     _, py_dir, r, _ = rprpr
     loaded = aspects.load(py_dir)
