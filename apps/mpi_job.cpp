@@ -175,9 +175,13 @@ int MpiJob::ranks_on_this_node() const {
   return n;
 }
 
-int MpiJob::wait_for_exit_status() {
+int MpiJob::wait_for_exit_status(
+    const std::function<void(int tag, const std::string& message)>& other) {
   std::string status;
-  for (int tag = -1; tag != kExitStatusTag;) status = receive(0, kAny, nullptr, &tag);
+  for (int tag = -1; tag != kExitStatusTag;) {
+    status = receive(0, kAny, nullptr, &tag);
+    if (tag != kExitStatusTag && other) other(tag, status);
+  }
   int code = 1;
   if (status.size() == sizeof code) std::memcpy(&code, status.data(), sizeof code);
   return code;

@@ -7,6 +7,7 @@
 // requests apart from the large parts it sends back: rank 0 answers requests first.
 #pragma once
 
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -55,9 +56,10 @@ class MpiJob {
   // work, and they would wait for ever.
   void finish(int exit_code);
   void set_workers(WorkerState s) { workers_ = s; }
-  // Other ranks: rank 0's exit status, once its run has ended. Other messages rank 0 sent
-  // before it knew this rank was done (a stop: apps/mpi_subtrees.h) are dropped.
-  int wait_for_exit_status();
+  // Other ranks: rank 0's exit status, once its run has ended. Rank 0's other messages
+  // until then go to `other` (its requests for held records: apps/mpi_subtrees.h), or are
+  // dropped (a stop sent before rank 0 knew this rank was done).
+  int wait_for_exit_status(const std::function<void(int tag, const std::string& message)>& other = {});
 
   [[noreturn]] void abort(int exit_code);
 

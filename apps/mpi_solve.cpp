@@ -145,12 +145,14 @@ int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
     return run_solve(o, &shared);
   }
   try {
-    search_subtrees_for_rank0(job, *run.model, engine_config(o), !o.no_cert);
+    std::optional<HeldRecords> held;
+    if (!o.no_cert) held.emplace(job.rank());
+    search_subtrees_for_rank0(job, *run.model, engine_config(o), held ? &*held : nullptr);
+    return serve_held_records_until_exit(job, held ? &*held : nullptr);
   } catch (const std::exception& e) {
     std::cerr << "aspects: rank " << job.rank() << ": " << e.what() << '\n';
     job.abort(1);
   }
-  return job.wait_for_exit_status();
 }
 
 }  // namespace aspects

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "certificate_writer.h"
+#include "mpi_held_records.h"
 #include "model/determinant_factors.h"
 #include "mpi_message.h"
 #include "mpi_stop.h"
@@ -28,16 +29,20 @@ namespace {
 
 constexpr int kRankDone = 10;
 constexpr int kStop = 13;
+constexpr int kFetchRecords = 14;  // Control: rank 0 asks for a subtree's held records
+constexpr int kHeldRecords = 15;   // Bulk: the answer
 constexpr int kFromThread = 1000;
 constexpr int kToThread = 3000;
 constexpr int kMaxThreads = 1024;  // --threads' limit
 constexpr uint8_t kReady = 0;                   // a request
 constexpr uint8_t kComplete = 1, kStopped = 2;  // parts
 
-std::string task_message(int32_t task, const std::vector<DeferredSubtree>& deferred) {
+std::string task_message(int32_t task, const std::vector<DeferredSubtree>& deferred,
+                         bool hold_records) {
   MessageWriter w;
   w.i32(task);
   if (task < 0) return w.s;
+  w.u8(hold_records);
   const DeferredSubtree& d = deferred[task];
   w.i32(d.parent_split);
   for (const Interval& x : d.box) {
@@ -71,7 +76,7 @@ int defer_depth_for(int processes, int threads) {
 
 void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
                              int /*factors*/, const std::function<bool()>& stopped,
-                             const Returned& returned) {
+                             const Returned& returned, bool records_may_wait) {
   if (deferred.size() < size_t(job_.size()) && !stopped())  // a stopped top left the rest
     std::cerr << "aspects: note: the search left " << deferred.size() << " subtrees for "
               << job_.size() << " processes: some will have nothing to search (fewer "
@@ -101,7 +106,7 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     if (in.u8() != kReady || !in.at_end()) in.fail("unexpected message");
     const int32_t next = stopped() ? -1 : queue.claim();
     if (next >= 0) owed.insert({sender, thread, next});
-    job_.send(sender, kToThread + thread, task_message(next, deferred));
+    job_.send(sender, kToThread + thread, task_message(next, deferred, records_may_wait));
     return false;
   };
   // Kept as the bytes it came in: decode() reads it as the merge grafts it.
@@ -123,7 +128,16 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
     part.bytes.reserve(8 + part_bytes);
     part.bytes.append(msg, in.pos() - 8, 8 + part_bytes);  // its length, then its bytes
     in.view(part_bytes);
-    std::string records = in.bytes(in.u64());
+    const uint8_t held = in.u8();
+    if (held > 1 || (held && !records_may_wait)) in.fail("unexpected records");
+    part.record_bytes = in.u64();
+    std::string records;
+    if (held) {
+      held_[task] = {sender, part.record_bytes};
+      part.fetch_records = [this, task] { return fetch_records(task); };
+    } else {
+      records = in.bytes(part.record_bytes);
+    }
     if (!in.at_end()) in.fail("trailing bytes");
     source_.at(size_t(task)) = sender;
     returned(task, kind == kComplete ? PartOutcome::Complete : PartOutcome::Stopped,
@@ -147,6 +161,43 @@ void MpiSubtreeServer::serve(SubtreeQueue& queue, const std::vector<DeferredSubt
   job_.set_workers(WorkerState::Waiting);
 }
 
+// A request and its answer cost a poll of each rank's waiting loop (up to a ms each), and a
+// subtree's records can be small (kilobytes): a rank is asked for the records of its next
+// subtrees in the order the certificate splices them (by task), up to kFetchBatch bytes,
+// and sends them in one message.
+std::string MpiSubtreeServer::fetch_records(int32_t task) {
+  const auto it = held_.find(task);
+  if (it == held_.end()) throw std::logic_error("no held records for this subtree");
+  const int rank = it->second.rank;
+  if (!fetched_.count(task)) {
+    MessageWriter ask;
+    std::vector<int32_t> batch;
+    uint64_t bytes = 0;
+    for (auto next = it; next != held_.end() && (batch.empty() || bytes < kFetchBatch); ++next)
+      if (next->second.rank == rank) {
+        batch.push_back(next->first);
+        bytes += next->second.size;
+      }
+    ask.u32(uint32_t(batch.size()));
+    for (int32_t t : batch) ask.i32(t);
+    job_.send(rank, kFetchRecords, ask.s);
+    const std::string msg = job_.receive(rank, kHeldRecords, nullptr, nullptr, MpiJob::Bulk);
+    MessageReader in(msg, rank);
+    if (in.u32() != batch.size()) in.fail("records it was not asked for");
+    for (int32_t t : batch) {
+      if (in.i32() != t) in.fail("records it was not asked for");
+      const uint64_t size = held_.at(t).size;
+      if (in.u64() != size) in.fail("records of another size than its part said");
+      fetched_[t] = in.bytes(size);
+    }
+    if (!in.at_end()) in.fail("trailing bytes");
+  }
+  std::string records = std::move(fetched_.at(task));
+  fetched_.erase(task);
+  held_.erase(it);
+  return records;
+}
+
 void MpiSubtreeServer::decode(int32_t task, const std::string& bytes, int factors,
                               SearchPart& part) const {
   MessageReader in(bytes, source_.at(size_t(task)));
@@ -155,7 +206,8 @@ void MpiSubtreeServer::decode(int32_t task, const std::string& bytes, int factor
 }
 
 void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& given,
-                               bool certificate) {
+                               HeldRecords* held) {
+  const bool certificate = held != nullptr;
   RankStop stop(job, kStop);
   AspectsConfig config = given;
   config.stop = &stop.condition();
@@ -170,11 +222,15 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
       ready.u8(kReady);
       // The next subtree is asked for before this one is searched: its answer is there
       // when the search ends, instead of a round trip (and rank 0's polling) between two.
+      bool hold = false;  // this subtree's records stay here until rank 0 fetches them
       auto next_subtree = [&](DeferredSubtree& subtree) {
         const std::string msg = job.receive(0, kToThread + thread);
         MessageReader in(msg, 0);
         const int32_t task = in.i32();
         if (task < 0) return task;
+        const uint8_t h = in.u8();
+        if (h > 1) in.fail("bad message");
+        hold = h;
         subtree.parent_split = in.i32();
         subtree.node = -1;
         subtree.box.resize(nv);
@@ -212,8 +268,13 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
              {counts.nodes, counts.solutions, counts.undecided, counts.discarded, counts.boxes})
           out.i64(x);
         write_search_part(out, part, uint32_t(factors.size()));
+        const bool keep = hold && certificate;
+        out.u8(keep);
         out.u64(records.size());
-        out.bytes(records.data(), records.size());
+        if (keep)
+          held->keep(task, records);
+        else
+          out.bytes(records.data(), records.size());
         // The part travels while this thread searches its next subtree; one at a time, so
         // that a rank 0 slow to take parts in holds the thread back.
         if (sending.valid()) sending.get();
@@ -225,6 +286,26 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
     }, tbb::simple_partitioner());
   });
   job.send(0, kRankDone, std::string());
+}
+
+int serve_held_records_until_exit(MpiJob& job, const HeldRecords* held) {
+  return job.wait_for_exit_status([&](int tag, const std::string& msg) {
+    if (tag != kFetchRecords) return;  // a stop that came after this rank was done
+    if (!held) throw std::runtime_error("rank 0 asked for records, and this rank kept none");
+    MessageReader in(msg, 0);
+    const uint32_t count = in.count(4);
+    MessageWriter out;
+    out.u32(count);
+    for (uint32_t i = 0; i < count; ++i) {
+      const int32_t task = in.i32();
+      const std::string records = held->read(task);
+      out.i32(task);
+      out.u64(records.size());
+      out.bytes(records.data(), records.size());
+    }
+    if (!in.at_end()) in.fail("trailing bytes");
+    job.send(0, kHeldRecords, out.s, MpiJob::Bulk);
+  });
 }
 
 }  // namespace aspects

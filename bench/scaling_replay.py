@@ -24,7 +24,10 @@ What is replayed (apps/mpi_subtrees.cpp, proofs/pipeline/search_phase.cpp):
     Rank 0's serving thread takes one part at a time: it receives it at --bandwidth bytes/s,
     decodes it (measured; with --decode-at-merge, as built, it keeps the bytes and the merge
     decodes each part as it grafts it, added to the later phases) and writes its records
-    to a file at --disk bytes/s (CertificateWriter::restore); each message waits --latency
+    to a file at --disk bytes/s (CertificateWriter::restore; with --records-at-end, as built
+    without checkpoints since the fifth slice, the records stay with the rank that searched
+    and rank 0 fetches them as it writes the certificate: their transfer at --bandwidth is
+    added to the later phases instead); each message waits --latency
     seconds on top (the ranks poll, sleeping up to 1 ms). --free-ingest makes all of this
     free: what the scheduler alone would give. The search ends when the last part is in;
   - rank 0 then runs every later phase alone: the measured `phase_seconds` of the run
@@ -50,7 +53,7 @@ without meaning).
 Usage: scaling_replay.py --stats CSV --summary JSON [--label TEXT] [--threads T]
   [--ranks 1,2,4,...] [--plot PNG] [--latency S] [--bandwidth B] [--disk B]
   [--records-per-node B] [--per-thread N | --old-cut] [--deeper K] [--no-cert]
-  [--free-ingest] [--async-parts] [--decode-at-merge] [--part-scale F]
+  [--free-ingest] [--async-parts] [--decode-at-merge] [--records-at-end] [--part-scale F]
   [--order dfs|heaviest [--blocks B]]
   [--grow-from CSV --eps E --eps-coarse E --eps-target E [--grow-depth G]
   [--target-nodes N] [--later-seconds S] [--extra-records-per-node B]]
@@ -193,7 +196,7 @@ def replay(work, ranks, threads, a, deeper):
     """Seconds of the search on `ranks` ranks of `threads` threads, and per-rank busy s."""
     depth = min(cut_for(ranks, threads, a) if ranks > 1 else 8 + deeper, work.depth)
     tasks = [(c, n, b * a.part_scale, d * a.part_scale) for c, n, b, d in work.coarse(depth)]
-    records_rate = 0 if a.no_cert else a.records_per_node
+    records_rate = 0 if a.no_cert or a.records_at_end else a.records_per_node
     top = work.top_seconds(depth)
     # Events: (time, order, kind, worker, task). Kinds: 0 ready for a subtree, 1 a part
     # arrives at rank 0's server. A worker w is thread w % threads of rank w // threads.
@@ -253,7 +256,11 @@ def table(label, work, later, a, out):
     records = 0 if a.no_cert else a.records_per_node * sum(work.nodes)
     decode = a.part_scale * sum(work.decode)
     ingest = (a.part_scale * sum(work.part_bytes) / a.bandwidth +
-              (0 if a.decode_at_merge else decode) + records / a.bandwidth + records / a.disk)
+              (0 if a.decode_at_merge else decode))
+    if a.records_at_end:  # fetched one subtree at a time as the certificate is written
+        later += records / a.bandwidth
+    else:
+        ingest += records / a.bandwidth + records / a.disk
     if a.decode_at_merge:  # the merge decodes each part as it grafts it, on one thread
         later += decode
     out.append(f"\n{label}: {work.processed:,} boxes processed, {len(work.paths):,} subtrees "
@@ -324,6 +331,10 @@ def main():
     ap.add_argument("--records-per-node", type=float, default=0,
                     help="certificate record bytes per box processed")
     ap.add_argument("--no-cert", action="store_true", help="no records travel")
+    ap.add_argument("--records-at-end", action="store_true",
+                    help="records stay with the rank that searched until rank 0 writes the "
+                    "certificate (as built without checkpoints since the fifth slice): their "
+                    "transfer is added to the later phases, the spool not counted")
     ap.add_argument("--free-ingest", action="store_true",
                     help="rank 0 takes parts in at no cost, no latency: the scheduler alone")
     ap.add_argument("--deeper", type=int, default=0, help="cut this many levels deeper")

@@ -80,6 +80,14 @@ rpr16 --records-per-node 14.9 $grow16 --extra-records-per-node 18.8 \
 echo "## Fourth slice, a 1 Gb/s link into rank 0 instead of 10 Gb/s"
 rpr16 --records-per-node 14.9 $grow16 --extra-records-per-node 18.8 --grow-depth 10 \
   --bandwidth 1.25e8 --scenario " (fourth slice, 1 Gb/s)" | sed -n '/extrapolated/,$p'
+# The fifth slice: the records stay on the rank that searched until rank 0 writes the
+# certificate (without --checkpoint): their transfer is added to the later phases.
+echo "## Fifth slice, records held until the certificate is written, format 2 records"
+rpr16 --records-at-end --records-per-node 191 $grow16 --extra-records-per-node 207 --grow-depth 10 \
+  --scenario " (fifth slice, format 2)" --points-out "$work/rpr_held.json" | sed -n '/extrapolated/,$p'
+echo "## Fifth slice, records held until the certificate is written, format 3 records"
+rpr16 --records-at-end --records-per-node 14.9 $grow16 --extra-records-per-node 18.8 --grow-depth 10 \
+  --scenario " (fifth slice, format 3)" | sed -n '/extrapolated/,$p'
 # The check of the extrapolation: eps 0.3 predicted from eps 1.2 and 0.6 (scheduler alone),
 # against the replay of the measured eps 0.3 (the first table).
 echo "## Check: the measured eps 0.3, scheduler alone"
@@ -92,5 +100,5 @@ for g in 0 8 10 12 16; do
     --target-nodes 21846665 --later-seconds 71.6 --grow-depth "$g" | sed -n '/extrapolated/,$p'
 done
 replay --plot-points "$work"/rpr_asbuilt.json "$work"/rpr_deeper.json "$work"/rrr_asbuilt.json \
-  "$work"/rpr_now.json --plot "$png"
+  "$work"/rpr_now.json "$work"/rpr_held.json --plot "$png"
 echo "plot: $png"

@@ -111,6 +111,9 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
 }
 
 std::string CertificateWriter::records(int32_t task) {
+  if (task >= 0 && size_t(task) < held_.size() && held_[task])
+    throw std::logic_error("the records of subtree " + std::to_string(task) +
+                           " are held by another process");
   TreeRecordFile& part = task < 0 ? *top_ : *tasks_.at(task);
   part.close();
   long size = 0;
@@ -144,7 +147,29 @@ void CertificateWriter::restore(int32_t task, const std::string& records,
   spool_size_ += long(records.size());
 }
 
+void CertificateWriter::restore_later(int32_t task, std::function<std::string()> fetch) {
+  if (int32_t(held_.size()) <= task) held_.resize(task + 1);
+  held_[task] = std::move(fetch);
+}
+
+TreeRecordFile& CertificateWriter::task_records(int32_t task) {
+  if (task >= 0 && size_t(task) < held_.size() && held_[task]) {
+    const std::function<std::string()> fetch = std::move(held_[task]);
+    held_[task] = nullptr;
+    if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);
+    tasks_[task] = std::make_unique<TreeRecordFile>(fetch(), format_ == 3);
+  }
+  return *tasks_.at(task);
+}
+
 FILE* CertificateWriter::open_records(const TreeRecordFile& stream, long* size) {
+  if (stream.in_memory()) {
+    std::string& m = const_cast<TreeRecordFile&>(stream).memory();
+    *size = long(m.size());
+    FILE* in = m.empty() ? std::fopen("/dev/null", "rb") : fmemopen(m.data(), m.size(), "rb");
+    if (!in) throw std::runtime_error("cannot read " + stream.path());
+    return in;
+  }
   if (stream.shared() && spool_ && std::fflush(spool_) != 0)
     throw std::runtime_error("cannot write " + stream.path() + ": " + std::strerror(errno));
   FILE* in = std::fopen(stream.path().c_str(), "rb");
@@ -164,8 +189,10 @@ FILE* CertificateWriter::open_records(const TreeRecordFile& stream, long* size) 
 
 // Spliced: its disk space is free for the rest (3-RPR at eps 0.1: 48 GB of records); a
 // range of the spool is punched out of it (where the filesystem can).
-void CertificateWriter::spliced(const TreeRecordFile& stream) {
-  if (!stream.shared()) {
+void CertificateWriter::spliced(TreeRecordFile& stream) {
+  if (stream.in_memory()) {
+    std::string().swap(stream.memory());
+  } else if (!stream.shared()) {
     std::remove(stream.path().c_str());
   } else if (spool_ && stream.end() > stream.begin()) {
     fallocate(fileno(spool_), FALLOC_FL_PUNCH_HOLE | FALLOC_FL_KEEP_SIZE, stream.begin(),
@@ -194,7 +221,7 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
   while (left > 0 && (len = getline(&buf, &cap, in)) > 0) {
     left -= long(len);
     if (buf[0] == '@') {
-      splice(*tasks_.at(std::stol(buf + 1)));
+      splice(task_records(int32_t(std::stol(buf + 1))));
       continue;
     }
     if ((buf[0] == 'U' || buf[0] == 'S' || buf[0] == 'N') && buf[1] == ' ') {
@@ -241,7 +268,7 @@ void CertificateWriter::splice_binary(TreeRecordFile& stream) {
   };
   for (const TreeRecordFile::Mark& m : stream.marks()) {
     copy_to(m.offset);
-    splice(*tasks_.at(m.task));
+    splice(task_records(m.task));
   }
   copy_to(size);
   std::fclose(in);
@@ -266,6 +293,10 @@ TreeRecordFile::TreeRecordFile(const std::string& path, int factors, int n,
 
 TreeRecordFile::TreeRecordFile(const std::string& path, long begin, long end, bool binary)
     : path_(path), begin_(begin), end_(end), binary_(binary), trailer_(binary) {}
+
+TreeRecordFile::TreeRecordFile(std::string records, bool binary)
+    : path_("(records fetched from another process)"), begin_(0), end_(long(records.size())),
+      binary_(binary), trailer_(binary), in_memory_(true), memory_(std::move(records)) {}
 
 TreeRecordFile::~TreeRecordFile() {
   if (f_) std::fclose(f_);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ class TreeRecordFile : public TreeSink {
   // Records already written, bytes [begin, end) of another's file (CertificateWriter's
   // spool of restored parts): read, never written nor removed.
   TreeRecordFile(const std::string& path, long begin, long end, bool binary);
+  // Records already written, held in memory (fetched from another process as the
+  // certificate is spliced: CertificateWriter::restore_later).
+  TreeRecordFile(std::string records, bool binary);
   ~TreeRecordFile() override;
   TreeRecordFile(const TreeRecordFile&) = delete;
   TreeRecordFile& operator=(const TreeRecordFile&) = delete;
@@ -47,6 +51,8 @@ class TreeRecordFile : public TreeSink {
   long begin() const { return begin_; }
   long end() const { return end_; }
   bool shared() const { return end_ >= 0; }
+  bool in_memory() const { return in_memory_; }
+  std::string& memory() { return memory_; }
   void close();  // flushes (format 3: after the trailer); the file can then be read back
   // Format 3: the file holds binary records (a shared range: with their trailer).
   bool binary() const { return binary_; }
@@ -69,6 +75,8 @@ class TreeRecordFile : public TreeSink {
   std::string record_;
   uint64_t records_ = 0, leaves_ = 0;
   std::vector<Mark> marks_;
+  bool in_memory_ = false;
+  std::string memory_;
 };
 
 // The format 3 coder of a subtree whose root cell is `root`.
@@ -96,6 +104,9 @@ class CertificateWriter : public CertificateSink {
   std::vector<TreeRecordFile::Mark> marks(int32_t task) const;
   void restore(int32_t task, const std::string& records) override { restore(task, records, {}); }
   void restore(int32_t task, const std::string& records, std::vector<TreeRecordFile::Mark> marks);
+  // Fetched as the certificate is spliced, and read from memory. Not with
+  // checkpoints: records(task) refuses a subtree whose records are still held elsewhere.
+  void restore_later(int32_t task, std::function<std::string()> fetch) override;
 
   // Links, CSNCs and claims; then closes and renames the file into place.
   void finish(const Model& model, const AspectsResult& result);
@@ -108,9 +119,10 @@ class CertificateWriter : public CertificateSink {
   void interval(const Interval& x);
   void end_line();
   void splice(TreeRecordFile& stream);
+  TreeRecordFile& task_records(int32_t task);  // fetched first if held elsewhere
   void splice_binary(TreeRecordFile& stream);
   FILE* open_records(const TreeRecordFile& stream, long* size);  // at its first byte
-  void spliced(const TreeRecordFile& stream);  // frees its disk space
+  void spliced(TreeRecordFile& stream);  // frees its disk space or memory
   void binary(const std::string& record);  // one format 3 record
   void links(const Model& model, const AspectsResult& r);
   void csncs(const AspectsResult& r);
@@ -120,6 +132,7 @@ class CertificateWriter : public CertificateSink {
   FILE* f_ = nullptr;  // file_'s stream, or the compressor layered over it
   std::unique_ptr<TreeRecordFile> top_;
   std::vector<std::unique_ptr<TreeRecordFile>> tasks_;
+  std::vector<std::function<std::string()>> held_;  // per task: restore_later's fetch
   // Restored parts' records, one after another in one file: an MPI job's rank 0 restores
   // a part for each subtree another rank searched, and a file each cost 150 µs to create
   // on ext4 (65,536 subtrees on 256 ranks), more on a parallel filesystem.

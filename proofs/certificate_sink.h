@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ class CertificateSink {
   // The records of subtree `task` as another process's TreeSink wrote them (a distributed
   // search: proofs/pipeline/remote_subtrees.h); then subtree(task) is not called.
   virtual void restore(int32_t task, const std::string& records) = 0;
+  // The same records, still held by the process that searched the subtree: `fetch` returns
+  // them when the certificate is written (once, on the writer's thread).
+  virtual void restore_later(int32_t task, std::function<std::string()> fetch) = 0;
 };
 
 }  // namespace aspects

@@ -137,7 +137,7 @@ class ThreadAsRemote : public RemoteSubtrees {
  public:
   explicit ThreadAsRemote(const AspectsConfig& c) : config_(c) {}
   void serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred, int,
-             const std::function<bool()>&, const Returned& returned) override {
+             const std::function<bool()>&, const Returned& returned, bool) override {
     set_working_precision(53);  // per thread
     Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rprpr.robot");
     const std::vector<Factor> factors = determinant_factors(m);

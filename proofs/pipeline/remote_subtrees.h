@@ -32,6 +32,11 @@ struct ReturnedPart {
   // Its nodes, the leaves of each fate (progress) and its output boxes (the merge's room),
   // before it is decoded.
   long nodes = 0, solutions = 0, undecided = 0, discarded = 0, boxes = 0;
+  // Its certificate records' size, and, when the process that searched it keeps them until
+  // the certificate is written (serve()'s `records_may_wait`), what returns them then (once,
+  // after serve() has returned).
+  uint64_t record_bytes = 0;
+  std::function<std::string()> fetch_records;
 };
 
 // Counts `part`'s nodes and the leaves of each fate into `into`.
@@ -52,7 +57,8 @@ class RemoteSubtrees {
   virtual ~RemoteSubtrees() = default;
 
   // A subtree searched elsewhere: its part and its certificate records (TreeSink records
-  // as certificates/certificate_writer.h writes them; empty without a certificate).
+  // as certificates/certificate_writer.h writes them; empty without a certificate, or when
+  // they wait with the process that searched it: ReturnedPart::fetch_records).
   using Returned = std::function<void(int32_t task, PartOutcome outcome, ReturnedPart&& part,
                                       std::string&& records)>;
 
@@ -70,11 +76,14 @@ class RemoteSubtrees {
   // and the other processes stop the subtrees they are searching), calls `returned` for
   // each part that comes back (its boxes have `factors` signs each), and returns when every
   // other process has finished. A Stopped part comes back when another process was stopped
-  // (by this one, or by a signal of its own). Throws when another process sends something
-  // that is not such a part.
+  // (by this one, or by a signal of its own). With `records_may_wait`, a part's records
+  // may stay where it was searched until the certificate is written: rank 0 of an MPI job
+  // then does not take in and spool every record while the search runs (48 GB of text on
+  // 3-RPR at eps 0.1), which is what bounded the job's speed-up. Not when a checkpoint must
+  // hold them. Throws when another process sends something that is not such a part.
   virtual void serve(SubtreeQueue& queue, const std::vector<DeferredSubtree>& deferred,
                      int factors, const std::function<bool()>& stopped,
-                     const Returned& returned) = 0;
+                     const Returned& returned, bool records_may_wait) = 0;
 };
 
 }  // namespace aspects

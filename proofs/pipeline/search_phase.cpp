@@ -159,16 +159,20 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
           [&](int32_t k, PartOutcome outcome, ReturnedPart&& part, std::string&& records) {
             count_for_progress(part, st.deferred[k].box, stats);
             if (config.subtree_observer.returned)
-              config.subtree_observer.returned(k, part, records.size());
+              config.subtree_observer.returned(k, part, size_t(part.record_bytes));
             st.parts[k] = std::move(part.part);
             st.encoded[k] = {std::move(part.bytes), part.nodes, part.boxes};
             std::lock_guard<std::mutex> g(cert_lock);
-            if (cert) cert->restore(k, records);
+            if (cert && part.fetch_records)
+              cert->restore_later(k, std::move(part.fetch_records));
+            else if (cert)
+              cert->restore(k, records);
             if (outcome == PartOutcome::Complete) checkpoints.mark_done(k);
             // Another rank stopped by a signal of its own stops the run: its part is partial.
             else if (config.stop) config.stop->request(StopReason::Signal);
             if (config.checkpoint_seconds > 0) checkpoints.write(false);
-          });
+          },
+          /*records_may_wait=*/!config.checkpoint);
     } catch (...) {
       remote_error = std::current_exception();
     }
