@@ -46,9 +46,9 @@ std::pair<long, double> encode_and_decode(const SearchPart& part, size_t deferre
   return {long(w.s.size()), seconds};
 }
 
-// The message of mpi_subtrees.cpp: kind u8, task i32, five u64 counts, the part, u64 record
-// count, records.
-constexpr long kMessageOverhead = 1 + 4 + 5 * 8 + 8;
+// The message of mpi_subtrees.cpp: kind u8, task i32, five u64 counts, the part, u8 held,
+// u64 record count, then the records (or, held, in a later message).
+constexpr long kMessageOverhead = 1 + 4 + 5 * 8 + 1 + 8;
 
 std::string seconds_text(double s) {
   if (s < 0) return "";

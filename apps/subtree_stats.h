@@ -19,8 +19,9 @@
 //   part_bytes      the part's encoding in an MPI message (apps/search_part_codec.h)
 //   decode_seconds  the seconds to read that encoding back, as an MPI job's rank 0 does
 //                   for every part on one thread
-//   message_bytes   the whole message another process sent (the part and its certificate
-//                   records); empty for a part searched here
+//   message_bytes   what another process sent for it: the part's message and its
+//                   certificate records (in that message, or later when rank 0 fetches
+//                   them: apps/mpi_subtrees.h); empty for a part searched here
 //   searched_by     here, or remote (another process of an MPI job)
 #pragma once
 
