@@ -162,9 +162,9 @@ TreeRecordFile& CertificateWriter::task_records(int32_t task) {
   return *tasks_.at(task);
 }
 
-FILE* CertificateWriter::open_records(const TreeRecordFile& stream, long* size) {
+FILE* CertificateWriter::open_records(TreeRecordFile& stream, long* size) {
   if (stream.in_memory()) {
-    std::string& m = const_cast<TreeRecordFile&>(stream).memory();
+    std::string& m = stream.memory();
     *size = long(m.size());
     FILE* in = m.empty() ? std::fopen("/dev/null", "rb") : fmemopen(m.data(), m.size(), "rb");
     if (!in) throw std::runtime_error("cannot read " + stream.path());

@@ -121,7 +121,7 @@ class CertificateWriter : public CertificateSink {
   void splice(TreeRecordFile& stream);
   TreeRecordFile& task_records(int32_t task);  // fetched first if held elsewhere
   void splice_binary(TreeRecordFile& stream);
-  FILE* open_records(const TreeRecordFile& stream, long* size);  // at its first byte
+  FILE* open_records(TreeRecordFile& stream, long* size);  // at its first byte
   void spliced(TreeRecordFile& stream);  // frees its disk space or memory
   void binary(const std::string& record);  // one format 3 record
   void links(const Model& model, const AspectsResult& r);

@@ -65,6 +65,10 @@ add_test(NAME paper_repro.only_prrp
                  ${CMAKE_CURRENT_BINARY_DIR}/paper_repro_only_prrp)
 set_tests_properties(paper_repro.only_prrp PROPERTIES TIMEOUT 120 LABELS cli)
 
+# Certificate records held by the process that searched (MPI), fetched as it is written.
+aspects_engine_test(test_held_records core 300)
+target_link_libraries(test_held_records PRIVATE aspects_cert_writer)
+
 # Runs stopped after their search, each partial certificate checked by check_cert.
 if(TARGET check_cert)
   aspects_engine_test(test_phase_stops core 300)
