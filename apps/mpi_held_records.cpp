@@ -46,24 +46,30 @@ void HeldRecords::keep(int32_t task, const std::string& records) {
   where_[task] = {at, records.size()};
 }
 
-std::string HeldRecords::read(int32_t task) const {
-  std::pair<uint64_t, uint64_t> range;
+uint64_t HeldRecords::size(int32_t task) const {
+  std::lock_guard<std::mutex> g(lock_);
+  const auto it = where_.find(task);
+  if (it == where_.end())
+    throw std::runtime_error("rank 0 asked for the records of subtree " + std::to_string(task) +
+                             ", which this rank did not search");
+  return it->second.second;
+}
+
+void HeldRecords::append_to(int32_t task, std::string& out) const {
+  const uint64_t length = size(task);
+  uint64_t offset;
   {
     std::lock_guard<std::mutex> g(lock_);
-    const auto it = where_.find(task);
-    if (it == where_.end())
-      throw std::runtime_error("rank 0 asked for the records of subtree " + std::to_string(task) +
-                               ", which this rank did not search");
-    range = it->second;
+    offset = where_.at(task).first;
   }
-  std::string b(range.second, '\0');
-  for (size_t done = 0; done < b.size();) {
-    const ssize_t k = ::pread(fd_, &b[done], b.size() - done, off_t(range.first + done));
+  const size_t at = out.size();
+  out.resize(at + length);
+  for (size_t done = 0; done < length;) {
+    const ssize_t k = ::pread(fd_, &out[at + done], length - done, off_t(offset + done));
     if (k < 0 && errno == EINTR) continue;
     if (k <= 0) throw std::runtime_error("cannot read " + path_);
     done += size_t(k);
   }
-  return b;
 }
 
 }  // namespace aspects

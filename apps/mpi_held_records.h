@@ -21,8 +21,10 @@ class HeldRecords {
 
   // Keeps subtree `task`'s records (from any thread).
   void keep(int32_t task, const std::string& records);
-  // Its records; throws if this rank holds none for it.
-  std::string read(int32_t task) const;
+  // The size of its records; throws if this rank holds none for it.
+  uint64_t size(int32_t task) const;
+  // Appends its records to `out` (the message that takes them: no copy in between).
+  void append_to(int32_t task, std::string& out) const;
 
  private:
   std::string path_;

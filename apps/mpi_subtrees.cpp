@@ -294,16 +294,21 @@ int serve_held_records_until_exit(MpiJob& job, const HeldRecords* held) {
     if (!held) throw std::runtime_error("rank 0 asked for records, and this rank kept none");
     MessageReader in(msg, 0);
     const uint32_t count = in.count(4);
-    MessageWriter out;
-    out.u32(count);
-    for (uint32_t i = 0; i < count; ++i) {
-      const int32_t task = in.i32();
-      const std::string records = held->read(task);
-      out.i32(task);
-      out.u64(records.size());
-      out.bytes(records.data(), records.size());
+    std::vector<int32_t> tasks(count);
+    size_t bytes = 4;
+    for (int32_t& task : tasks) {
+      task = in.i32();
+      bytes += 12 + held->size(task);
     }
     if (!in.at_end()) in.fail("trailing bytes");
+    MessageWriter out;
+    out.s.reserve(bytes);  // up to 16 MB: read straight into the message
+    out.u32(count);
+    for (int32_t task : tasks) {
+      out.i32(task);
+      out.u64(held->size(task));
+      held->append_to(task, out.s);
+    }
     job.send(0, kHeldRecords, out.s, MpiJob::Bulk);
   });
 }
