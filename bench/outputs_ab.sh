@@ -1,9 +1,10 @@
 #!/bin/sh
-# Interleaved A/B of the outputs phase (boxes.csv, aspects.idx and the certificate, written
-# concurrently after the solve): every binary once a round, in turn.
-#   sh bench/outputs_ab.sh MODEL EPS ROUNDS THREADS ASPECTS_A ASPECTS_B ...
-# Prints one line a run: binary, round, the outputs phase and the whole solve (summary.json's
-# phase_seconds, wall s), and the size of boxes.csv; then each binary's medians.
+# Interleaved A/B of one phase of the solve, by default the outputs phase (boxes.csv,
+# aspects.idx and the certificate, written concurrently after the solve); PHASE=NAME for
+# another (summary.json's phase_seconds names): every binary once a round, in turn.
+#   [PHASE=NAME] sh bench/outputs_ab.sh MODEL EPS ROUNDS THREADS ASPECTS_A ASPECTS_B ...
+# Prints one line a run: binary, round, the phase and all phases (summary.json's
+# phase_seconds), and the size of boxes.csv; then each binary's medians.
 set -eu
 [ $# -ge 5 ] || { echo "usage: $0 MODEL EPS ROUNDS THREADS ASPECTS..." >&2; exit 2; }
 model=$1 eps=$2 rounds=$3 threads=$4
@@ -21,7 +22,7 @@ import json, os, sys
 d, exe, r, i = sys.argv[1:]
 s = json.load(open(os.path.join(d, "summary.json")))
 p = s["phase_seconds"]
-print(i, exe, r, "%.3f" % p["outputs"], "%.3f" % sum(p.values()),
+print(i, exe, r, "%.3f" % p[os.environ.get("PHASE", "outputs")], "%.3f" % sum(p.values()),
       os.path.getsize(os.path.join(d, "boxes.csv")))
 PY
     tail -n 1 "$work/runs"
@@ -34,6 +35,6 @@ for line in open(sys.argv[1]):
     i, exe, r, out, total, size = line.split()
     runs.setdefault((int(i), exe), []).append((float(out), float(total), int(size)))
 for (i, exe), v in sorted(runs.items()):
-    print("median %s: outputs %.3f s, all phases %.3f s, boxes.csv %d bytes (%d runs)" %
+    print("median %s: phase %.3f s, all phases %.3f s, boxes.csv %d bytes (%d runs)" %
           (exe, statistics.median(x[0] for x in v), statistics.median(x[1] for x in v), v[0][2], len(v)))
 PY

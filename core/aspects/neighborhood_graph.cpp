@@ -24,6 +24,10 @@ struct Hulls {
   const BoxStore& R;
   std::vector<int32_t> slot;  // per node: its hull's index, -1 for none (leaves included)
   std::vector<float> h;       // per hull, lo and hi per variable
+  // Per hull, the largest output box id below its node: a query for box a reports only
+  // b > a, so it skips the nodes below which every id is at most a (with ids in depth-first
+  // order, about half the tree for each query).
+  std::vector<int32_t> last;
 
   static float down(double x) {
     float f = float(x);
@@ -49,24 +53,27 @@ struct Hulls {
     // [+inf, -inf] is the empty hull: it meets nothing and is the identity of the union.
     h.resize(size_t(hulls) * 2 * nv);
     for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
+    last.assign(size_t(hulls), -1);
     for (size_t i = tree.size(); i-- > 0;)
       if (slot[i] >= 0) {
         float* hull = &h[size_t(slot[i]) * 2 * nv];
-        unite(tree[i].left(), hull);
-        unite(tree[i].right(), hull);
+        unite(tree[i].left(), hull, last[slot[i]]);
+        unite(tree[i].right(), hull, last[slot[i]]);
       }
   }
 
-  // hull ∪= the output boxes below `node` (whose hull, if it has one, is already made).
-  void unite(int32_t node, float* hull) const {
+  // hull ∪= the output boxes below `node` (whose hull, if it has one, is already made), and
+  // last_id := max(last_id, their largest id).
+  void unite(int32_t node, float* hull, int32_t& last_id) const {
     const SearchNode& s = tree[node];
     const int nv = R.nv();
     if (s.internal() && slot[node] < 0) {
-      unite(s.left(), hull);
-      unite(s.right(), hull);
+      unite(s.left(), hull, last_id);
+      unite(s.right(), hull, last_id);
       return;
     }
     if (!s.internal() && s.leaf() < 0) return;
+    last_id = std::max(last_id, s.internal() ? last[slot[node]] : s.leaf());
     for (int v = 0; v < nv; ++v) {
       float lo, hi;
       if (s.internal()) {
@@ -125,6 +132,7 @@ struct Query {
       return;
     }
     if (hulls.slot[node] >= 0) {
+      if (hulls.last[hulls.slot[node]] <= self) return;
       const float* h = &hulls.h[size_t(hulls.slot[node]) * 2 * nv];
       for (int v = 0; v < nv; ++v)
         if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
