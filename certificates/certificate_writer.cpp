@@ -42,8 +42,8 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
   if (compress && !(f_ = open_compressed_output(file_.stream(), 3, 1)))
     throw std::runtime_error("cannot compress " + file_.temporary_path() + ": " +
                              std::strerror(errno));
-  static char buffer[1 << 20];
-  std::setvbuf(f_, buffer, _IOFBF, sizeof buffer);
+  buffer_.reset(new char[kBuffer]);
+  std::setvbuf(f_, buffer_.get(), _IOFBF, kBuffer);
   n_ = model.n();
   line("aspects-certificate " + std::to_string(format));
   line(std::string("tool aspects ") + kToolVersion);

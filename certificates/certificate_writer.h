@@ -128,6 +128,10 @@ class CertificateWriter : public CertificateSink {
   void csncs(const AspectsResult& r);
   void close();
 
+  static constexpr long kBuffer = 1 << 20;
+  // f_'s stdio buffer, this writer's own (two writers may coexist); before file_, so that
+  // it outlives file_'s closing of an unfinished certificate.
+  std::unique_ptr<char[]> buffer_;
   AtomicFile file_;
   FILE* f_ = nullptr;  // file_'s stream, or the compressor layered over it
   std::unique_ptr<TreeRecordFile> top_;

@@ -1,8 +1,9 @@
-// Records held by the process that searched a subtree (an MPI rank: apps/mpi_held_records.h)
-// and fetched as the certificate is written give the certificate of a single process, byte
-// for byte; a checkpoint cannot take them (CertificateWriter::records refuses). Another
-// process is stood in for by a thread, as in test_generalized_aspects.cpp, so that this runs
-// in the default build, without MPI.
+// The certificate writer's parts from elsewhere: records held by the process that searched
+// a subtree (an MPI rank: apps/mpi_held_records.h) and fetched as the certificate is written
+// give the certificate of a single process, byte for byte; a checkpoint cannot take them
+// (CertificateWriter::records refuses). Another process is stood in for by a thread, as in
+// test_generalized_aspects.cpp, so that this runs in the default build, without MPI. And
+// two writers at once (two solves in one process, as the Python module allows).
 #include <gtest/gtest.h>
 
 #include <mpfr.h>
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <thread>
 
 #include "certificate_writer.h"
 #include "generalized_aspects.h"
@@ -127,4 +129,15 @@ TEST(HeldRecords, ACheckpointCannotTakeRecordsHeldElsewhere) {
     EXPECT_EQ(fetched, 0);
   }
   std::filesystem::remove(path);
+}
+
+TEST(HeldRecords, TwoWritersAtOnceWriteTheirOwnCertificates) {
+  // Seen failing with the writers' stdio buffer a static array shared by both.
+  const std::string alone = certificate(2, nullptr, "two_writers_alone.cert");
+  std::string a, b;
+  std::thread other([&] { a = certificate(2, nullptr, "two_writers_a.cert"); });
+  b = certificate(2, nullptr, "two_writers_b.cert");
+  other.join();
+  EXPECT_TRUE(a == alone) << "the first writer's certificate differs";
+  EXPECT_TRUE(b == alone) << "the second writer's certificate differs";
 }
