@@ -46,22 +46,17 @@ void HeldRecords::keep(int32_t task, const std::string& records) {
   where_[task] = {at, records.size()};
 }
 
-uint64_t HeldRecords::size(int32_t task) const {
+std::pair<uint64_t, uint64_t> HeldRecords::range(int32_t task) const {
   std::lock_guard<std::mutex> g(lock_);
   const auto it = where_.find(task);
   if (it == where_.end())
     throw std::runtime_error("rank 0 asked for the records of subtree " + std::to_string(task) +
                              ", which this rank did not search");
-  return it->second.second;
+  return it->second;
 }
 
 void HeldRecords::append_to(int32_t task, std::string& out) const {
-  const uint64_t length = size(task);
-  uint64_t offset;
-  {
-    std::lock_guard<std::mutex> g(lock_);
-    offset = where_.at(task).first;
-  }
+  const auto [offset, length] = range(task);
   const size_t at = out.size();
   out.resize(at + length);
   for (size_t done = 0; done < length;) {

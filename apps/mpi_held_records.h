@@ -22,11 +22,13 @@ class HeldRecords {
   // Keeps subtree `task`'s records (from any thread).
   void keep(int32_t task, const std::string& records);
   // The size of its records; throws if this rank holds none for it.
-  uint64_t size(int32_t task) const;
+  uint64_t size(int32_t task) const { return range(task).second; }
   // Appends its records to `out` (the message that takes them: no copy in between).
   void append_to(int32_t task, std::string& out) const;
 
  private:
+  std::pair<uint64_t, uint64_t> range(int32_t task) const;  // offset, length; throws
+
   std::string path_;
   int fd_ = -1;
   mutable std::mutex lock_;

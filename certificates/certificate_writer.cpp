@@ -111,7 +111,7 @@ void CertificateWriter::begin(const Box& domain, const std::vector<Factor>& fact
 }
 
 std::string CertificateWriter::records(int32_t task) {
-  if (task >= 0 && size_t(task) < held_.size() && held_[task])
+  if (held(task))
     throw std::logic_error("the records of subtree " + std::to_string(task) +
                            " are held by another process");
   TreeRecordFile& part = task < 0 ? *top_ : *tasks_.at(task);
@@ -153,7 +153,7 @@ void CertificateWriter::restore_later(int32_t task, std::function<std::string()>
 }
 
 TreeRecordFile& CertificateWriter::task_records(int32_t task) {
-  if (task >= 0 && size_t(task) < held_.size() && held_[task]) {
+  if (held(task)) {
     const std::function<std::string()> fetch = std::move(held_[task]);
     held_[task] = nullptr;
     if (int32_t(tasks_.size()) <= task) tasks_.resize(task + 1);

@@ -120,6 +120,9 @@ class CertificateWriter : public CertificateSink {
   void end_line();
   void splice(TreeRecordFile& stream);
   TreeRecordFile& task_records(int32_t task);  // fetched first if held elsewhere
+  bool held(int32_t task) const {  // restore_later's, not yet fetched
+    return task >= 0 && size_t(task) < held_.size() && held_[task];
+  }
   void splice_binary(TreeRecordFile& stream);
   FILE* open_records(TreeRecordFile& stream, long* size);  // at its first byte
   void spliced(TreeRecordFile& stream);  // frees its disk space or memory
