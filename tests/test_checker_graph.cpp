@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "../certificates/checker/checker.h"
+#include "../certificates/checker/speed.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <tuple>
 
-#include "checker.h"
+#include "speed.h"
 
 namespace cc {
 

@@ -4,7 +4,7 @@
 // O(N²), and not 3^(periodic variables) copies: only the sweep dimension is shifted, the
 // other variables are tested shift by shift. Its pairs go straight to the visitor; M is
 // never held. PlainSweep (bound.cpp) finds the same pairs.
-#include "checker.h"
+#include "speed.h"
 
 #include <algorithm>
 #include <array>

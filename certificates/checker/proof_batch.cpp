@@ -15,7 +15,7 @@
 #include <memory>
 #include <new>
 
-#include "checker.h"
+#include "speed.h"
 
 namespace cc {
 

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "checker.h"
+#include "speed.h"
 
 #ifdef CHECK_CERT_MPI
 #include <mpi.h>
