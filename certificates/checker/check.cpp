@@ -56,7 +56,8 @@ void Checker::read_model() {
   if (out.model_sha != sha) rejected(model_rec, "SHA-256 of the embedded model does not match");
   const int64_t prec = rd.expect({"precision"}, 1).integer();
   if (prec < 24 || prec > 4096) malformed(rec(), "precision out of range 24..4096");
-  set_interval_precision(mpfr_prec_t(prec), doubles);
+  set_interval_precision(mpfr_prec_t(prec), speed);  // doubles at 53 bits
+  Evaluator::speed = speed;
   try {
     m = parse_model(text);
     // A limit of the checker, not of the format: the evaluator keeps about nodes·(variables
@@ -206,7 +207,7 @@ void Checker::run(const CheckOptions& o) {
   const auto t0 = Clock::now();
   if (const char* e = std::getenv("CHECK_CERT_WORK_BASE"))
     work_base = std::max(10, std::min(40, std::atoi(e)));
-  doubles = !o.trusted_only;
+  speed = !o.trusted_only;
   rd.print(o.print);
   header();
   threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));

@@ -51,7 +51,7 @@ struct Checker {
   std::tuple<long, long, long> last_witness{-1, -1, -1};  // (CSNC, A, B)
   std::tuple<long, long, long> last_assembly{-1, -1, -1};  // (CSNC, A, B)
   int work_base = 29;
-  bool doubles = true;  // intervals of doubles at 53 bits (off with --trusted-only)
+  bool speed = true;  // the speed layer (off with --trusted-only)
   size_t pairs_ = 0;  // pairs of M, for the statistics
   double graph_seconds_ = 0;  // building and sweeping M, for the statistics
   double tree_seconds_ = 0;   // the tree section: its records and their proofs, likewise

@@ -4,9 +4,10 @@
 // --trusted-only: the reader (cert_reader.cpp, compressed_input.cpp), the model parser
 // (model.cpp), MPFI intervals (interval.cpp), the evaluator (eval.cpp), the proofs on one box
 // (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp, sections.cpp) and the graph M
-// with the bound (bound.cpp). The optional speed layer, tested against the core: speed.h
-// (proofs on T threads and P ranks, the strip sweep of M) and intervals of doubles at 53
-// bits (interval_doubles.cpp). The command line and its output: cli.cpp.
+// with the bound (bound.cpp): MPFI, MPFR and GMP its only arithmetic. The optional speed
+// layer, tested against the core: speed.h (proofs on T threads and P ranks, the strip
+// sweep of M), intervals of doubles at 53 bits (interval_doubles.cpp) and the ends of sin,
+// cos, asin and acos from Arb (trig_arb.cpp). The command line and its output: cli.cpp.
 #pragma once
 
 #include <openssl/evp.h>
@@ -233,6 +234,9 @@ struct WorkLimit : std::runtime_error {
 
 class Evaluator {
  public:
+  // sin, cos and the branch inverses of HC4 by Arb (the speed layer, trig_arb.cpp), or by
+  // MPFI (--trusted-only); set before an Evaluator is made.
+  static bool speed;
   explicit Evaluator(const Model& m);
   ~Evaluator();
   const Model& model() const { return m_; }
@@ -276,6 +280,7 @@ class Evaluator {
   bool monotone_projection(Op op, const Ival& r, Ival& a, const Ival& fa);
   bool project_general(Op op, const Ival& r, Ival& a);
   void branch_inverse(Op op, const Ival& r, End e, int s, double c, Ival& out);
+  void arb_inverse(Op op, const Ival& r, End e, Ival& out);  // trig_arb.cpp
   bool hull_both(Ival& a, const Ival& s);  // a ∩= (s ∪ −s)
   bool meet_nonnegative(Ival& r);
   bool project_square(Ival& r, Ival& a);
@@ -293,25 +298,28 @@ class Evaluator {
   std::vector<Ival> seen_;
   void note_changes(const Ival* box);
   bool fresh(int id) const;
-  // Caches of sin and cos per argument node: MPFR trigonometry is the costly part.
-  // sin(q)/cos(q) pairs, sin/cos derivatives and neighbouring slabs hit the last argument;
-  // a contraction moves one end at a time, and the last two ends keep the other one.
+  // The last argument of each sin or cos and its sine and cosine: sin(q)/cos(q) pairs,
+  // sin/cos derivatives and neighbouring slabs hit it.
   struct TrigCache {
     Ival arg, sin, cos;
-    Ival end[2], end_sin[2], end_cos[2];  // two recent ends and their enclosures
+    Ival end[2], end_sin[2], end_cos[2];  // trig_arb.cpp: two recent ends and their values
     int last = 0;
   };
   std::vector<TrigCache> tc_;  // one per argument of sin or cos
   std::vector<int> tc_of_;     // per node: its cache in tc_, -1 if none
-  void sincos(TrigCache& cache, const Ival& a, Ival& s, Ival& c);
-  // Arb's balls for the ends of sin, cos, asin and acos (eval.cpp): rigorous, and at the
-  // usual precisions several times cheaper than MPFR's correctly rounded functions.
+  // The speed layer's trigonometry (trig_arb.cpp): Arb's balls at the ends; a contraction
+  // moves one end at a time, and the last two ends keep the other one.
+  void arb_sincos(TrigCache& cache, const Ival& a);
   struct Balls;
-  std::unique_ptr<Balls> balls_;
+  struct FreeBalls {  // defined where Balls is
+    void operator()(Balls* b) const;
+  };
+  std::unique_ptr<Balls, FreeBalls> balls_;  // made on first use
+  Balls& balls();
   struct Memo {
     double t = NAN, s[2], c[2];  // an end, its sine and cosine
   };
-  std::vector<Memo> memo_ = std::vector<Memo>(1024);  // 2^10: the shift below
+  std::vector<Memo> memo_ = std::vector<Memo>(1024);  // 2^10: the shift in trig_arb.cpp
   void ends_sin_cos(const Ival& a, End x, Ival& s, Ival& c);
   void extremum(Ival& v, const Ival& a, double off, double lo, double hi);
   Ival pi_;
