@@ -109,8 +109,8 @@ int check_main(int argc, char** argv) {
           },
           "0..256"));
   app.add_flag("--trusted-only", o.trusted_only,
-               "check with the trusted core alone: proofs in line, one thread, the plain sweep "
-               "of M (slower; the same verdict)");
+               "check with the trusted core alone: MPFI for every interval and function, proofs "
+               "in line on one thread, the plain sweep of M (slower; the same verdict)");
   app.add_flag("--print", o.print,
                "print every record as text on stdout while checking it (binary records of "
                "format 3 with their ends decoded), then the verdict");
