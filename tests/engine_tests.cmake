@@ -47,7 +47,7 @@ add_executable(test_evaluator_differential test_evaluator_differential.cpp
   ${PROJECT_SOURCE_DIR}/certificates/checker/interval.cpp
   ${PROJECT_SOURCE_DIR}/certificates/checker/interval_doubles.cpp
   ${PROJECT_SOURCE_DIR}/certificates/checker/eval.cpp
-  ${PROJECT_SOURCE_DIR}/certificates/checker/trig_arb.cpp)
+  ${PROJECT_SOURCE_DIR}/certificates/checker/eval_speed.cpp)
 target_link_libraries(test_evaluator_differential PRIVATE aspects_core GTest::gtest_main)
 target_compile_definitions(test_evaluator_differential PRIVATE
   ASPECTS_ROBOTS_DIR="${ASPECTS_TEST_ROBOTS_DIR}")

@@ -6,8 +6,9 @@
 // (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp, sections.cpp) and the graph M
 // with the bound (bound.cpp): MPFI, MPFR and GMP its only arithmetic. The optional speed
 // layer, tested against the core: speed.h (proofs on T threads and P ranks, the strip
-// sweep of M), intervals of doubles at 53 bits (interval_doubles.cpp) and the ends of sin,
-// cos, asin and acos from Arb (trig_arb.cpp). The command line and its output: cli.cpp.
+// sweep of M), intervals of doubles at 53 bits (interval_doubles.cpp), and incremental
+// evaluation and the ends of sin, cos, asin and acos from Arb (eval_speed.cpp). The command
+// line and its output: cli.cpp.
 #pragma once
 
 #include <openssl/evp.h>
@@ -234,8 +235,9 @@ struct WorkLimit : std::runtime_error {
 
 class Evaluator {
  public:
-  // sin, cos and the branch inverses of HC4 by Arb (the speed layer, trig_arb.cpp), or by
-  // MPFI (--trusted-only); set before an Evaluator is made.
+  // The speed layer (eval_speed.cpp): incremental evaluation, and sin, cos and the branch
+  // inverses of HC4 by Arb; else (--trusted-only) every node at every evaluation, by MPFI.
+  // Set before an Evaluator is made.
   static bool speed;
   explicit Evaluator(const Model& m);
   ~Evaluator();
@@ -280,7 +282,7 @@ class Evaluator {
   bool monotone_projection(Op op, const Ival& r, Ival& a, const Ival& fa);
   bool project_general(Op op, const Ival& r, Ival& a);
   void branch_inverse(Op op, const Ival& r, End e, int s, double c, Ival& out);
-  void arb_inverse(Op op, const Ival& r, End e, Ival& out);  // trig_arb.cpp
+  void arb_inverse(Op op, const Ival& r, End e, Ival& out);  // eval_speed.cpp
   bool hull_both(Ival& a, const Ival& s);  // a ∩= (s ∪ −s)
   bool meet_nonnegative(Ival& r);
   bool project_square(Ival& r, Ival& a);
@@ -289,10 +291,10 @@ class Evaluator {
   std::vector<Ival> val_, der_, cval_;
   // Per node: 0 defined (and finite) on the whole box, 1 partial or unbounded, 2 nowhere.
   std::vector<int> cstat_, st_;  // constant nodes (once), every node (last evaluation)
-  // Incremental evaluation: a node is recomputed only when a variable it mentions changed
-  // since it was computed (the cells of a search tree and their slabs differ in one or two
-  // variables). Times of a clock: of each node's computation (0: not valid), of each
-  // variable's last change, and the intervals the last evaluation saw.
+  // Incremental evaluation (eval_speed.cpp): a node is recomputed only when a variable it
+  // mentions changed since it was computed (the cells of a search tree and their slabs
+  // differ in one or two variables). Times of a clock: of each node's computation (0: not
+  // valid), of each variable's last change, and the intervals the last evaluation saw.
   uint64_t clock_ = 1;
   std::vector<uint64_t> stamp_, changed_at_;
   std::vector<Ival> seen_;
@@ -302,12 +304,12 @@ class Evaluator {
   // sin/cos derivatives and neighbouring slabs hit it.
   struct TrigCache {
     Ival arg, sin, cos;
-    Ival end[2], end_sin[2], end_cos[2];  // trig_arb.cpp: two recent ends and their values
+    Ival end[2], end_sin[2], end_cos[2];  // eval_speed.cpp: two recent ends and their values
     int last = 0;
   };
   std::vector<TrigCache> tc_;  // one per argument of sin or cos
   std::vector<int> tc_of_;     // per node: its cache in tc_, -1 if none
-  // The speed layer's trigonometry (trig_arb.cpp): Arb's balls at the ends; a contraction
+  // The speed layer's trigonometry (eval_speed.cpp): Arb's balls at the ends; a contraction
   // moves one end at a time, and the last two ends keep the other one.
   void arb_sincos(TrigCache& cache, const Ival& a);
   struct Balls;
@@ -319,7 +321,7 @@ class Evaluator {
   struct Memo {
     double t = NAN, s[2], c[2];  // an end, its sine and cosine
   };
-  std::vector<Memo> memo_ = std::vector<Memo>(1024);  // 2^10: the shift in trig_arb.cpp
+  std::vector<Memo> memo_ = std::vector<Memo>(1024);  // 2^10: the shift in eval_speed.cpp
   void ends_sin_cos(const Ival& a, End x, Ival& s, Ival& c);
   void extremum(Ival& v, const Ival& a, double off, double lo, double hi);
   Ival pi_;

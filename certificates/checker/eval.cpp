@@ -82,7 +82,7 @@ void Evaluator::power(Ival& r, const Ival& a, int k) {
 }
 
 // sin and cos of a, the last argument's kept per argument node: by MPFI, or by Arb
-// (trig_arb.cpp).
+// (eval_speed.cpp).
 void Evaluator::trig(bool cosine, int child, const Ival& a, Ival& r) {
   TrigCache& c = tc_[tc_of_[child]];
   if (!same(c.arg, Lo, a, Lo) || !same(c.arg, Hi, a, Hi)) {  // NaN: never equal
@@ -166,7 +166,7 @@ int Evaluator::apply(int id, Ival& r, const Ival* a, const Ival* b) {
 // mode evaluates every node.
 bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
   charge(prog.size());
-  note_changes(box);
+  if (speed) note_changes(box);
   for (int id : prog) {
     const Node& n = m_.nodes[id];
     Ival& r = val_[id];
@@ -174,7 +174,7 @@ bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
     if (!n.dep) {
       r = cval_[id];
       st = cstat_[id];
-    } else if (!fresh(id)) {
+    } else if (!speed || !fresh(id)) {  // fresh: unchanged since (eval_speed.cpp)
       if (n.op == Op::Var) {
         r = box[n.k];
         st = var_status(r);
@@ -187,26 +187,6 @@ bool Evaluator::eval(const std::vector<int>& prog, const Ival* box, Mode mode) {
     }
     if (mode != Mode::Truth && (st == 2 || (st == 1 && mode == Mode::Proof))) return false;
   }
-  return true;
-}
-
-// A variable whose interval differs from the one the last evaluation saw gets a new time.
-void Evaluator::note_changes(const Ival* box) {
-  for (int v = 0; v < nv(); ++v) {
-    Ival& s = seen_[v];
-    if (same(s, Lo, box[v], Lo) && same(s, Hi, box[v], Hi)) continue;
-    s = box[v];  // NaN ends compare unequal: such a variable is always new
-    changed_at_[v] = ++clock_;
-  }
-}
-
-// A node's value and status are kept when it was computed after the last change of every
-// variable it mentions (its value is a function of theirs) and not narrowed by HC4 since.
-bool Evaluator::fresh(int id) const {
-  const uint64_t t = stamp_[id];
-  if (t == 0) return false;
-  for (uint64_t d = m_.nodes[id].dep; d; d &= d - 1)
-    if (changed_at_[__builtin_ctzll(d)] > t) return false;
   return true;
 }
 
@@ -467,7 +447,7 @@ bool Evaluator::backward(int id, Ival* box) {
 }
 
 // out := enclosure of s·asin(y) + cπ (sin) or s·acos(y) + cπ (cos), y an end of r: by MPFI
-// on the point y, or by Arb (trig_arb.cpp).
+// on the point y, or by Arb (eval_speed.cpp).
 void Evaluator::branch_inverse(Op op, const Ival& r, End e, int s, double c, Ival& out) {
   if (speed) {
     arb_inverse(op, r, e, out);

@@ -1,8 +1,10 @@
-// trig_arb.cpp — speed layer (off with --trusted-only, where MPFI computes them): the
-// evaluator's sin and cos of an interval, and the branch inverses of HC4, from Arb's balls
-// at the interval's ends (rigorous, and at the usual precisions several times cheaper than
-// MPFR's correctly rounded functions), with the last ends of each argument kept and, on
-// doubles, a table of ends. test_checker_interval: the ends are MPFR's, one ulp at most.
+// eval_speed.cpp — speed layer of the evaluator (Evaluator::speed, off with --trusted-only,
+// where every node is computed at every evaluation and MPFI computes sin and cos):
+// incremental evaluation, and sin and cos of an interval and the branch inverses of HC4
+// from Arb's balls at the interval's ends (rigorous, and at the usual precisions several
+// times cheaper than MPFR's correctly rounded functions), with the last ends of each
+// argument kept and, on doubles, a table of ends. test_checker_interval: the ends are
+// MPFR's, one ulp at most; cert_verdicts.py: the verdicts are the trusted core's.
 #include <arb.h>
 
 #include <cmath>
@@ -11,6 +13,26 @@
 #include "checker.h"
 
 namespace cc {
+
+// A variable whose interval differs from the one the last evaluation saw gets a new time.
+void Evaluator::note_changes(const Ival* box) {
+  for (int v = 0; v < nv(); ++v) {
+    Ival& s = seen_[v];
+    if (same(s, Lo, box[v], Lo) && same(s, Hi, box[v], Hi)) continue;
+    s = box[v];  // NaN ends compare unequal: such a variable is always new
+    changed_at_[v] = ++clock_;
+  }
+}
+
+// A node's value and status are kept when it was computed after the last change of every
+// variable it mentions (its value is a function of theirs) and not narrowed by HC4 since.
+bool Evaluator::fresh(int id) const {
+  const uint64_t t = stamp_[id];
+  if (t == 0) return false;
+  for (uint64_t d = m_.nodes[id].dep; d; d &= d - 1)
+    if (changed_at_[__builtin_ctzll(d)] > t) return false;
+  return true;
+}
 
 // Enclosures of f(x) (and g(x)) at an end x of an interval, from Arb's balls rounded
 // outward to the certificate's precision p. A ball whose rounding is more than one ulp
