@@ -6,7 +6,7 @@
 // (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp, sections.cpp) and the graph M
 // with the bound (bound.cpp): MPFI, MPFR and GMP its only arithmetic. The optional speed
 // layer, tested against the core: speed.h (proofs on T threads and P ranks, the strip
-// sweep of M), intervals of doubles at 53 bits (interval_doubles.cpp), and incremental
+// sweep of M), intervals of doubles at 53 bits (interval_doubles.h/.cpp), and incremental
 // evaluation and the ends of sin, cos, asin and acos from Arb (eval_speed.cpp). The command
 // line and its output: cli.cpp.
 #pragma once

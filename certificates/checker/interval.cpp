@@ -2,7 +2,7 @@
 // (the speed layer, off with --trusted-only), each operation is its dbl:: namesake
 // (interval_doubles.cpp), which computes the common cases itself and leaves the others
 // (a false return) to the same MPFI functions, on the doubles' exact ends.
-#include "interval.h"
+#include "interval_doubles.h"
 
 namespace cc {
 

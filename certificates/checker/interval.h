@@ -101,34 +101,4 @@ void log_hi(Ival& r, const Ival& a);  // [-inf, log(a.hi) rounded up]
 void const_pi(Ival& r);
 bool set_str(Ival& r, const std::string& decimal);  // false: not a number
 
-// ---- Speed layer (interval_doubles.cpp): the operations above when Ival::doubles. Those
-// returning bool compute finite proper operands away from the underflow threshold; false
-// leaves the case to MPFI. MPFI on doubles: per-thread 53-bit scratch intervals (0..2), and
-// the exact conversions to them and back (outward).
-namespace dbl {
-bool add(Ival& r, const Ival& a, const Ival& b);
-bool sub(Ival& r, const Ival& a, const Ival& b);
-bool mul(Ival& r, const Ival& a, const Ival& b);
-bool div(Ival& r, const Ival& a, const Ival& b);
-bool mul_d(Ival& r, const Ival& a, double d);
-bool sqr(Ival& r, const Ival& a);
-bool sqrt(Ival& r, const Ival& a);
-bool abs(Ival& r, const Ival& a);
-void neg(Ival& r, const Ival& a);
-void hull(Ival& r, const Ival& a, const Ival& b);
-void intersect(Ival& r, const Ival& a, const Ival& b);
-void min(Ival& r, const Ival& a, const Ival& b);
-void max(Ival& r, const Ival& a, const Ival& b);
-void set(Ival& r, double lo, double hi);
-bool less(const Ival& x, End ex, const Ival& y, End ey);
-int cmp(const Ival& x, End e, double d);
-int end_sign(const Ival& x, End e);
-bool one_ulp(const Ival& a);
-bool is_inside(const Ival& a, const Ival& b);
-void mid(Ival& r, const Ival& a);
-mpfi_ptr scratch(int i);
-void to_mpfi(mpfi_ptr out, const Ival& a);
-void from_mpfi(Ival& r, mpfi_srcptr x);
-}  // namespace dbl
-
 }  // namespace cc

@@ -12,7 +12,7 @@
 #include <cstring>
 #include <utility>
 
-#include "interval.h"
+#include "interval_doubles.h"
 
 namespace cc::dbl {
 
