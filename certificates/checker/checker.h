@@ -33,8 +33,9 @@ namespace cc {
 // ---- The lexical layer (cert_reader.cpp, FORMAT.md "Lexical rules"): one record per line,
 // single-space separated fields, canonical decimal integers and canonical `%a` hexadecimal
 // reals; in format 3 also binary records (a first byte >= 0x80, FORMAT.md "Format 3"),
-// decoded into the same fields, each end still coded against its reference interval. The reader hashes every byte it consumes (SHA-256 of the whole file) and numbers
-// lines for error messages. Anything that does not follow the rules is a Malformed error
+// decoded into the same fields, each end still coded against its reference interval. The
+// reader hashes every byte it consumes (SHA-256 of the whole file) and numbers lines for
+// error messages. Anything that does not follow the rules is a Malformed error
 // (exit 2); failed verifications are Rejected errors (exit 1), thrown by the other modules
 // with the record they concern.
 struct CertError : std::runtime_error {
@@ -347,8 +348,9 @@ class Prover {
   std::vector<Ival> box;          // nv intervals: the box the next call works on
 
   // P1/P3: y = q̌ − GS(C·Fq(x, Q), C·f(x, q̌)), x the pose part of `box`, Q the inflated box
-  // (n lo/hi pairs), C row major (nullptr: the checker's own, the inverse of mid Fq). Returns nullptr on success, else why it failed. With
-  // `pose` the roles swap (V records): x unknown in Q, Fx for Fq, the commands of `box` fixed.
+  // (n lo/hi pairs), C row major (nullptr: the checker's own, the inverse of mid Fq).
+  // Returns nullptr on success, else why it failed. With `pose` the roles swap (V
+  // records): x unknown in Q, Fx for Fq, the commands of `box` fixed.
   const char* newton(const double* Q, const double* C, bool pose = false);
   std::vector<Ival> y;
   // P2 on `box`: C_X·Fx·diag(D_X) and C_Q·Fq·diag(D_Q) strictly diagonally dominant
