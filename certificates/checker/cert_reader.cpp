@@ -1,6 +1,6 @@
-// cert_reader.cpp — the lexical layer of the certificate: reads the file line by line with
-// getline(3), feeds every byte to a SHA-256 context, and refuses anything that is not
-// exactly in the canonical form of FORMAT.md.
+// cert_reader.cpp — trusted core: the lexical layer of the certificate. Reads the file line
+// by line with getline(3), feeds every byte to a SHA-256 context, and refuses anything that
+// is not exactly in the canonical form of FORMAT.md.
 #include "checker.h"
 
 #include <cmath>

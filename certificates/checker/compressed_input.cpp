@@ -1,6 +1,6 @@
-// compressed_input.cpp — certificates compressed by zstd (`aspects solve --compress-cert`)
-// are read through a FILE* that decompresses them, so that everything after this file sees
-// the text, and the SHA-256 check_cert reports is the text's, compressed or not.
+// compressed_input.cpp — trusted core: certificates compressed by zstd (`aspects solve
+// --compress-cert`) are read through a FILE* that decompresses them, so that everything after this
+// file sees the text, and the SHA-256 check_cert reports is the text's, compressed or not.
 #include <zstd.h>
 
 #include <cerrno>

@@ -1,7 +1,7 @@
-// eval.cpp — interval semantics (interval.h) of every node of the model language
-// (statuses and modes in checker.h). Unbounded or NaN results become the entire line with
-// status 1. HC4 backward steps intersect each child with a superset of its values
-// compatible with the parent.
+// eval.cpp — trusted core: interval semantics (interval.h) of every node of the model language
+// (statuses and modes in checker.h); its speed layer is eval_speed.cpp. Unbounded or NaN results
+// become the entire line with status 1. HC4 backward steps intersect each child with a superset of
+// its values compatible with the parent.
 #include "checker.h"
 
 #include <algorithm>

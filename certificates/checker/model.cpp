@@ -1,6 +1,6 @@
-// model.cpp — lexer and recursive-descent parser of the model language, written for the
-// checker independently of the solver's. One statement per line (`#` comments); a
-// statement continues over newlines while a ( or [ is open. Grammar:
+// model.cpp — trusted core: lexer and recursive-descent parser of the model language, written for
+// the checker independently of the solver's. One statement per line (`#` comments); a statement
+// continues over newlines while a ( or [ is open. Grammar:
 //   expr := term (('+'|'-') term)*     term := unary (('*'|'/') unary)*
 //   unary := ('-'|'+') unary | power   power := primary ['^' ['-'] INTEGER]
 //   primary := NUMBER | pi | NAME | FUNC '(' expr ')' | (min|max) '(' expr ',' expr ')'

@@ -1,5 +1,5 @@
-// proofs.cpp — Hansen–Sengupta (proof and contraction), strong regularity, factor
-// enclosures and refutation. Preconditioners are plain doubles: the recorded ones are
+// proofs.cpp — trusted core: Hansen–Sengupta (proof and contraction), strong regularity,
+// factor enclosures and refutation. Preconditioners are plain doubles: the recorded ones are
 // hints, and the checker's own (for refutation) come from a small Gauss–Jordan inverse of
 // the midpoint matrix; any real matrix is sound because every product that feeds a
 // verdict is an outward-rounded interval operation (interval.h) on the exact doubles.

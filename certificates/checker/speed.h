@@ -2,7 +2,8 @@
 // fast, each tested against the trusted core (checker.h) and off with --trusted-only, except
 // the ranks, which without MPI are one process: the proofs on T threads and P processes
 // (proof_batch.cpp, ranks.cpp) and the strip sweep of the graph M (fast_sweep.cpp). The
-// doubles path of the interval type is declared with it (interval.h, interval_doubles.cpp).
+// doubles path of the interval type and the evaluator's have headers of their own
+// (interval_doubles.h; checker.h, whose Evaluator holds eval_speed.cpp's state).
 #pragma once
 
 #include <atomic>
