@@ -294,19 +294,20 @@ int serve_held_records_until_exit(MpiJob& job, const HeldRecords* held) {
     if (!held) throw std::runtime_error("rank 0 asked for records, and this rank kept none");
     MessageReader in(msg, 0);
     const uint32_t count = in.count(4);
-    std::vector<int32_t> tasks(count);
+    std::vector<std::pair<int32_t, uint64_t>> tasks(count);  // task, size of its records
     size_t bytes = 4;
-    for (int32_t& task : tasks) {
+    for (auto& [task, size] : tasks) {
       task = in.i32();
-      bytes += 12 + held->size(task);
+      size = held->size(task);
+      bytes += 12 + size;
     }
     if (!in.at_end()) in.fail("trailing bytes");
     MessageWriter out;
     out.s.reserve(bytes);  // up to 16 MB: read straight into the message
     out.u32(count);
-    for (int32_t task : tasks) {
+    for (const auto& [task, size] : tasks) {
       out.i32(task);
-      out.u64(held->size(task));
+      out.u64(size);
       held->append_to(task, out.s);
     }
     job.send(0, kHeldRecords, out.s, MpiJob::Bulk);
