@@ -9,8 +9,8 @@
 #   runs/KEY/               summary.json, model.robot, solve.log, check.json (check_cert
 #                           --json: the certified bound), check.log, record.txt
 #   run_info.txt            mode, command line, commit, build, total time
-#   beyond_3rrr.md, figures/3rrr_bound.png, figures/3rrr_csncs.png   the full 3-RRR beside the numerical sampling
-#                           count of robots/3rrr_sampling.py (when 3rrr was run)
+#   beyond_3rrr.md, figures/3rrr_bound.png, figures/3rrr_csncs.png   the full 3-RRR, its sampling only as a numerical cross-check
+#                           (thick grid components of robots/3rrr_sampling.py, no count; when 3rrr was run)
 #
 # Everything is written in a temporary directory next to OUT and renamed at the end, so
 # an interrupted run (Ctrl-C, SIGTERM) leaves OUT as it was.
@@ -372,7 +372,7 @@ if [ ${#FIG_DIRS[@]} -gt 0 ]; then
   fi
 fi
 # ------------------------------------------------------------------ beyond the paper
-# The full 3-RRR: its certified run beside the sampling count, labelled numerical.
+# The full 3-RRR: its certified run, and the sampling as a numerical cross-check (no count).
 if [ -f "$TMP/runs/3rrr/summary.json" ]; then
   if [ $QUICK -eq 1 ]; then grids=("${SAMPLING_QUICK[@]}"); else grids=("${SAMPLING_FULL[@]}"); fi
   log "[3-RRR] numerical sampling count on grids ${grids[*]} ..."

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""A numerical, NOT certified, count of the aspects of the full 3-RRR (robots/3rrr.robot).
+"""Numerical, NOT certified, grid components of the full 3-RRR (robots/3rrr.robot): no count of its aspects.
 
 Samples the pose (x1, x2, x3) on a regular grid, x3 periodic. For each pose and each of the
 8 working modes (the branch of each leg's inverse kinematics, q_i = phi_i +- acos(d_i / 20)),
@@ -10,9 +10,13 @@ sheet, so each sheet has constant det Fq signs. A generalized aspect is then a c
 of grid cells of one sheet where det Fx keeps its sign, found by flood fill (face
 neighbours, and across the x3 = +-pi seam).
 
-What sampling cannot see: a neck or a component thinner than the grid step, and a sign of
-det Fx at a point where it is nearly zero. Hence the study under refinement, and the
-count of the thick components only (see components()). The result is labelled numerical.
+What sampling cannot see: a neck or a component thinner than the grid step, a sign of det Fx
+at a point where it is nearly zero, and the slivers near a stretched leg (d_i = 20), where
+q_i behaves like sqrt(20 - d_i) so that an aspect there can be quadratically thin in the
+pose (a regular pose grid has no chart in the leg angles there). An independent study with
+such charts finds small aspects near the corners where two d_i = 20 surfaces meet that this
+grid does not see. Hence only the thick components are counted (see components()), and the
+result is labelled numerical: it is not the number of aspects.
 
 Usage: robots/3rrr_sampling.py [N ...] [--slice X3] [--json FILE]    (N: cells per axis, default 64 128)
 """
@@ -144,7 +148,8 @@ def main():
                     help="count on the slice at this orientation only (3-RRR* is --slice 0)")
     args = ap.parse_args()
     out = []
-    print("NUMERICAL (not certified): aspects of the full 3-RRR by sampling")
+    print("NUMERICAL (not certified): grid components of the full 3-RRR by sampling; "
+          "blind to aspects thinner than the grid step and near d_i = 20 (not a count of the aspects)")
     print(f"{'N':>5} {'components':>10} {'thick':>6}  per class (mode, det Fx sign): "
           "components, thick ones [sizes in cells]")
     for n in args.n:
