@@ -8,6 +8,7 @@
 
 #include "aspects_version.h"
 #include "checkpoint.h"
+#include "count_command.h"
 #include "model/model.h"
 #include "model/model_info.h"
 #include "mpi_launcher.h"
@@ -31,11 +32,13 @@ struct Commands {
   CLI::App* query = nullptr;
   CLI::App* path = nullptr;
   CLI::App* plot = nullptr;
+  CLI::App* count = nullptr;
   std::string info_model;
   SolveOptions solve_options;
   QueryOptions query_options;
   PathOptions path_options;
   PlotOptions plot_options;
+  CountOptions count_options;
 };
 
 void add_info(CLI::App& app, Commands& c) {
@@ -136,6 +139,24 @@ void add_plot(CLI::App& app, Commands& c) {
   plot->add_option("--path", po.path, "draw the path of this file (`aspects path --json` output)");
 }
 
+void add_count(CLI::App& app, Commands& c) {
+  CountOptions& co = c.count_options;
+  auto* count = c.count = app.add_subcommand(
+      "count", "Certified number of aspects (lower = upper), or certified bounds on it");
+  count->add_option("MODEL", co.model_path, "robot model file; default: the embedded RRRRR five-bar");
+  count->add_option("--eps", co.eps, "epsilon of the first cover (refinement is adaptive after it)")
+      ->default_val(0.5);
+  count->add_option("--min-width", co.min_width,
+                    "do not bisect boxes narrower than this fraction of the domain")
+      ->default_val(1e-4);
+  count->add_option("--time-limit", co.time_limit,
+                    "stop after SECONDS and print the bounds reached (exit 3)");
+  count->add_option("--threads", co.threads, "threads of the first cover's search (0: one per core)")
+      ->default_val(0);
+  count->add_flag("--json", co.json, "print one JSON object");
+  count->add_flag("--progress", co.progress, "progress on stderr even when it is not a terminal");
+}
+
 // The options of `solve` given on the command line: a resumed run refuses those that
 // differ from its checkpoint, and the model's `bisect` statement yields to --bisect.
 void record_given_options(Commands& c) {
@@ -154,6 +175,7 @@ int run_command(Commands& c) {
   if (*c.query) return run_query(c.query_options);
   if (*c.path) return run_path(c.path_options);
   if (*c.plot) return run_plot(c.plot_options);
+  if (*c.count) return run_count(c.count_options);
   return run_solve(c.solve_options);
 }
 
@@ -226,6 +248,7 @@ int main(int argc, char** argv) {
   add_query(app, commands);
   add_path(app, commands);
   add_plot(app, commands);
+  add_count(app, commands);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,123 @@
+#include "count_command.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "counting/exact_count.h"
+#include "model/model.h"
+#include "search/stop_condition.h"
+#include "solve_command.h"
+
+namespace aspects {
+
+namespace {
+
+std::string class_text(uint32_t cls, int p) {
+  std::string s;
+  for (int i = 0; i < p; ++i) s += (cls >> i) & 1 ? '+' : '-';
+  return s;
+}
+
+std::string box_text(const OpenPlace& o, const Model& m) {
+  std::ostringstream out;
+  out.precision(6);
+  for (size_t v = 0; v < o.lo.size(); ++v)
+    out << (v ? ", " : "") << m.vars[v].name << " in [" << o.lo[v] << ", " << o.hi[v] << "]";
+  return out.str();
+}
+
+void progress_line(int round, const CountBounds& b, long cells, void*) {
+  std::fprintf(stderr, "count: round %d, %ld boxes, lower %d, upper %s (%ld pieces, %ld adjacencies open)\n",
+               round + 1, cells, b.lower, b.upper < 0 ? "none" : std::to_string(b.upper).c_str(),
+               b.open_pieces, b.open_adjacencies);
+}
+
+}  // namespace
+
+int run_count(const CountOptions& o) {
+  if (!(o.eps > 0)) throw UsageError("--eps must be positive");
+  if (!(o.min_width > 0 && o.min_width < 1)) throw UsageError("--min-width must be in (0, 1)");
+  if (o.time_limit < 0) throw UsageError("--time-limit must be >= 0");
+  Model m = o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
+                                 : load_model(o.model_path);
+  StopCondition stop;
+  if (o.time_limit > 0) stop.set_time_limit(o.time_limit);
+  stop.set_watch_signals(true);
+  watch_stop_signals();
+  CountConfig cfg;
+  cfg.eps = o.eps;
+  cfg.min_width = o.min_width;
+  cfg.threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  cfg.stop = &stop;
+  if (o.progress || isatty(2)) cfg.progress = progress_line;
+  CountResult r;
+  try {
+    r = count_aspects(m, cfg);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(m.file + ": " + e.what());
+  }
+  const CountBounds& b = r.bounds;
+  const int p = int(r.factor_text.size());
+  std::string line;
+  if (b.exact())
+    line = std::to_string(b.lower) + " aspects (certified: lower = upper)";
+  else if (b.upper >= 0)
+    line = "between " + std::to_string(b.lower) + " and " + std::to_string(b.upper) +
+           " aspects (certified)";
+  else
+    line = "at least " + std::to_string(b.lower) +
+           " aspects (certified); no upper bound: " + std::to_string(b.open_pieces) +
+           " piece(s) not proved connected";
+  if (o.json) {
+    nlohmann::json j;
+    j["robot"] = m.name;
+    j["lower_bound"] = b.lower;
+    j["upper_bound"] = b.upper < 0 ? nlohmann::json(nullptr) : nlohmann::json(b.upper);
+    j["exact"] = b.exact();
+    j["stop"] = count_stop_name(r.stop);
+    j["open_pieces"] = b.open_pieces;
+    j["open_adjacencies"] = b.open_adjacencies;
+    j["first_cover"] = {{"eps", o.eps}, {"boxes", r.first_cover_boxes},
+                        {"separated_lower_bound", r.separation_bound}};
+    j["boxes"] = r.cells;
+    j["pieces"] = r.pieces;
+    j["adjacencies"] = r.adjacencies;
+    j["bisections"] = r.bisections;
+    j["rounds"] = r.rounds;
+    j["seconds"] = r.seconds;
+    j["factors"] = r.factor_text;
+    nlohmann::json open = nlohmann::json::array();
+    for (const OpenPlace& pl : r.open)
+      open.push_back({{"reason", open_reason_name(pl.reason)}, {"class", class_text(pl.cls, p)},
+                      {"lo", pl.lo}, {"hi", pl.hi}});
+    j["open"] = open;
+    std::cout << j.dump(1) << '\n';
+  } else {
+    std::cout << line << '\n';
+    std::cout << "robot " << m.name << "  first cover eps " << o.eps << " (" << r.first_cover_boxes
+              << " boxes, separated lower bound " << r.separation_bound << "), then "
+              << r.bisections << " bisections where a bound could move\n";
+    std::cout << "boxes: " << r.cells << ", pieces: " << r.pieces << ", adjacencies: "
+              << r.adjacencies << ", rounds: " << r.rounds << ", " << r.seconds << " s\n";
+    std::cout << "sign classes over:";
+    for (const std::string& f : r.factor_text) std::cout << "  " << f;
+    std::cout << '\n';
+    if (!b.exact()) {
+      std::cout << "the gap is held by " << b.open_pieces << " piece(s) not proved connected and "
+                << b.open_adjacencies << " undecided adjacency(ies) between components; stopped: "
+                << count_stop_name(r.stop) << '\n';
+      for (const OpenPlace& pl : r.open)
+        std::cout << "  class " << class_text(pl.cls, p) << ": " << open_reason_name(pl.reason)
+                  << ", at " << box_text(pl, m) << '\n';
+    }
+  }
+  return r.stop == CountStop::Stopped ? 3 : 0;
+}
+
+}  // namespace aspects

@@ -1,0 +1,150 @@
+#include "counting/class_point.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aspects {
+
+Box point_box(const Model& m, const ClassPoint& p) {
+  std::vector<int> u, w;
+  chart_variables(m, p.kind, u, w);
+  Box b(m.vars.size());
+  for (size_t k = 0; k < u.size(); ++k) b[u[k]].set_point(p.u[k]);
+  for (size_t j = 0; j < w.size(); ++j) b[w[j]] = p.w[j];
+  return b;
+}
+
+namespace {
+
+struct Candidate {
+  double margin;
+  std::vector<double> u, w;
+};
+
+// Newton in doubles for w at the u-point, from the middle of the box's w-part: a choice.
+bool newton_w(ModelEvaluator& ev, const Box& box,
+              const std::vector<int>& w, bool pose_u, std::vector<double>& wpt) {
+  const int n = ev.n();
+  Box pt = box;
+  for (int j = 0; j < n; ++j) pt[w[j]].set_point(box[w[j]].mid());
+  std::vector<Interval> f;
+  IMatrix J;
+  Eigen::MatrixXd A(n, n);
+  Eigen::VectorXd b(n);
+  for (int it = 0; it < 30; ++it) {
+    if (ev.equations(pt, f) != EvalStatus::Defined) return false;
+    if ((pose_u ? ev.jacobian_q(pt, J) : ev.jacobian_x(pt, J)) != EvalStatus::Defined) return false;
+    for (int i = 0; i < n; ++i) {
+      b(i) = f[i].mid();
+      for (int j = 0; j < n; ++j) A(i, j) = J(i, j).mid();
+    }
+    Eigen::VectorXd dx = A.fullPivLu().solve(b);
+    if (!dx.allFinite()) return false;
+    double step = 0;
+    for (int j = 0; j < n; ++j) {
+      const double x = pt[w[j]].mid() - dx(j);
+      pt[w[j]].set_point(x);
+      step = std::max(step, std::fabs(dx(j)) / (1 + std::fabs(x)));
+    }
+    if (step < 1e-15) break;
+  }
+  wpt.resize(n);
+  for (int j = 0; j < n; ++j) {
+    wpt[j] = pt[w[j]].mid();
+    if (!(wpt[j] >= box[w[j]].lo_down() && wpt[j] <= box[w[j]].hi_up())) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
+                              ChartKind kind, uint32_t cls, HsWorkspace& ws, ClassPoint& out,
+                              int per_axis) {
+  const Model& m = ev.model();
+  const int n = ev.n(), p = fg.factors();
+  std::vector<int> u, w;
+  chart_variables(m, kind, u, w);
+  const bool pose_u = kind == ChartKind::Pose;
+  // The grid of u-points: per axis the centres of per_axis equal cells (one point on a
+  // degenerate axis).
+  std::vector<Candidate> found;
+  std::vector<int> idx(n, 0);
+  std::vector<Interval> values, whole;
+  // Scales of the factors over the box, to compare their margins with the faces'.
+  const bool scaled = fg.values(ev, box, whole);
+  Box pt = box;
+  for (;;) {
+    Candidate c;
+    c.u.resize(n);
+    for (int k = 0; k < n; ++k) {
+      const double lo = box[u[k]].lo_down(), hi = box[u[k]].hi_up();
+      const int cells = lo == hi ? 1 : per_axis;
+      c.u[k] = std::min(hi, std::max(lo, lo + (hi - lo) * (idx[k] + 0.5) / cells));
+      pt[u[k]].set_point(c.u[k]);
+    }
+    if (newton_w(ev, pt, w, pose_u, c.w)) {
+      for (int j = 0; j < n; ++j) pt[w[j]].set_point(c.w[j]);
+      if (fg.values(ev, pt, values)) {
+        // The depth of the point in the piece: the least of the factors' margins (relative
+        // to their range over the box) and the distances to the faces of W (relative to
+        // its width), a star centre deep inside has the best chance.
+        c.margin = INFINITY;
+        for (int i = 0; i < p; ++i) {
+          const double s = (cls >> i) & 1 ? 1.0 : -1.0;
+          const double g = s * values[i].mid();
+          double scale = std::fabs(values[i].mid());
+          if (scaled) scale = std::max(std::fabs(whole[i].lo_down()), std::fabs(whole[i].hi_up()));
+          c.margin = std::min(c.margin, g / (scale > 0 ? scale : 1.0));
+        }
+        for (int j = 0; j < n; ++j) {
+          const double lo = box[w[j]].lo_down(), hi = box[w[j]].hi_up();
+          if (hi > lo) c.margin = std::min(c.margin, std::min(c.w[j] - lo, hi - c.w[j]) / (hi - lo));
+        }
+        if (c.margin > 0) found.push_back(c);
+      }
+      for (int j = 0; j < n; ++j) pt[w[j]] = box[w[j]];
+    }
+    int k = 0;
+    for (; k < n; ++k) {
+      const int cells = box[u[k]].lo_down() == box[u[k]].hi_up() ? 1 : per_axis;
+      if (++idx[k] < cells) break;
+      idx[k] = 0;
+    }
+    if (k == n) break;
+  }
+  std::sort(found.begin(), found.end(),
+            [](const Candidate& a, const Candidate& b) { return a.margin > b.margin; });
+  if (found.size() > 4) found.resize(4);
+  ExistenceProof proof;
+  for (const Candidate& c : found) {
+    Box z = box;
+    for (int k = 0; k < n; ++k) z[u[k]].set_point(c.u[k]);
+    for (int j = 0; j < n; ++j) {
+      const double r = 1e-12 * (1 + std::fabs(c.w[j]));
+      z[w[j]].set_hull(c.w[j] - r, c.w[j] + r);
+    }
+    if (prove_existence(ev, z, 1.01, 12, proof, ws, !pose_u) != Existence::Proved) continue;
+    bool inside = true;
+    for (int j = 0; j < n; ++j) {
+      if (!box[w[j]].contains(proof.image[j])) inside = false;
+      z[w[j]] = proof.image[j];
+    }
+    if (!inside || !fg.values(ev, z, values)) continue;
+    bool signs = true;
+    for (int i = 0; i < p; ++i) {
+      const bool positive = (cls >> i) & 1;
+      if (!(positive ? values[i].certainly_pos() : values[i].certainly_neg())) signs = false;
+    }
+    if (!signs) continue;
+    out.kind = kind;
+    out.u = c.u;
+    out.w = proof.image;
+    return PointVerdict::Found;
+  }
+  return PointVerdict::NotFound;
+}
+
+}  // namespace aspects

@@ -1,0 +1,33 @@
+// A certified point of W_s in a box: a point of the solution set V in the box where every
+// factor has its sign s_i strictly. Chosen in doubles (a grid of the box's u-part, Newton
+// for w), then proved: iteration (9) at the u-point gives a unique w in an enclosure that
+// lies in the box's w-part, and on (u, enclosure) each factor's enclosure has sign s_i.
+// A piece's star centre is one (its piece is nonempty); a point in the inner intersection of
+// two boxes joins their pieces of class s (an adjacency "joined").
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "counting/chart.h"
+#include "counting/factor_gradients.h"
+
+namespace aspects {
+
+struct ClassPoint {
+  ChartKind kind = ChartKind::Pose;
+  std::vector<double> u;         // the chart's u-point, n doubles (chart_variables order)
+  std::vector<Interval> w;       // the enclosure of its unique w
+};
+
+enum class PointVerdict : uint8_t { Found, NotFound };
+
+// cls: bit i set when factor i is positive. per_axis: grid points per u-axis.
+PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
+                              ChartKind kind, uint32_t cls, HsWorkspace& ws, ClassPoint& out,
+                              int per_axis = 5);
+
+// The point as a box in model order (u exact, w its enclosure).
+Box point_box(const Model& m, const ClassPoint& p);
+
+}  // namespace aspects

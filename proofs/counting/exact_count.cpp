@@ -1,0 +1,628 @@
+#include "counting/exact_count.h"
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "aspects/neighborhood_graph.h"
+#include "contractor.h"
+#include "counting/chart.h"
+#include "counting/class_point.h"
+#include "counting/factor_gradients.h"
+#include "counting/star_test.h"
+#include "generalized_aspects.h"
+#include "link.h"
+
+namespace aspects {
+
+const char* open_reason_name(OpenReason r) {
+  switch (r) {
+    case OpenReason::NoChart: return "no chart (neither the pose nor the command chart proved)";
+    case OpenReason::NoPoint: return "no certified point of the class found";
+    case OpenReason::NotStar: return "star-shaped test failed";
+    case OpenReason::Adjacency: return "adjacency neither joined nor refuted";
+  }
+  return "?";
+}
+
+const char* count_stop_name(CountStop s) {
+  switch (s) {
+    case CountStop::Exact: return "exact";
+    case CountStop::MinWidth: return "least width reached";
+    case CountStop::Rounds: return "round budget spent";
+    case CountStop::Stopped: return "stopped";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr size_t kMaxOpenPlaces = 8;
+
+struct PieceRec {
+  uint32_t cls;
+  PieceState state;
+  OpenReason why;
+};
+
+struct Cell {
+  Box box;                     // closed, double ends; holds every solution it covers
+  bool solution = false;       // a solve's solution box: P1 made V ∩ B a graph over [x]
+  bool decided = false;        // pieces computed
+  bool alive = true;
+  // A chart held but a star test failed: bisect its u (a shorter graph is straighter; a
+  // bisection in w only cuts the graph into thinner, as curved, strips).
+  int8_t split_in_u = -1;  // -1, or the ChartKind whose u to bisect
+  std::vector<PieceRec> pieces;
+  int32_t node = -1;           // its leaf in the refinement tree
+};
+
+struct ClassEdge {
+  uint32_t cls;
+  AdjacencyState state = AdjacencyState::Undecided;
+  bool tried = false;
+};
+
+struct Adj {
+  int32_t a, b;
+  std::vector<std::vector<int>> shifts;  // k per variable: b + 2πk meets a
+  std::vector<ClassEdge> classes;
+};
+
+class Counter {
+ public:
+  Counter(Model& m, const CountConfig& config, const FactorGradients& fg)
+      : m_(m), config_(config), fg_(fg), ev_(m), contractor_(ev_), nv_(int(m.vars.size())) {
+    two_pi_ = Interval(0.0);
+    mpfi_const_pi(two_pi_.get());
+    mpfi_mul_ui(two_pi_.get(), two_pi_.get(), 2);
+    for (const auto& v : m.vars) {
+      periodic_.push_back(v.periodic);
+      domain_width_.push_back(v.periodic ? 2 * M_PI : std::max(v.domain.width_up(), 1e-300));
+    }
+  }
+
+  // The solve's output boxes and its tree: a leaf per box, bisected further where needed. The
+  // tree is the bounding-volume hierarchy of the neighbourhood graph (recomputed each round
+  // on the boxes as they are: a box with a chart becomes U × the range of its graph).
+  void add_first_cover(const AspectsResult& solved) {
+    const OutputBoxes& R = solved.boxes;
+    cells_.reserve(R.size());
+    for (int i = 0; i < R.size(); ++i) {
+      Cell c;
+      c.box.resize(nv_);
+      for (int v = 0; v < nv_; ++v) c.box[v].set_hull(R.lo(i, v), R.hi(i, v));
+      c.solution = R.certified(i);
+      cells_.push_back(std::move(c));
+    }
+    tree_ = solved.tree;
+    for (size_t t = 0; t < tree_.size(); ++t)
+      if (!tree_[t].internal() && tree_[t].leaf() >= 0) cells_[tree_[t].leaf()].node = int32_t(t);
+  }
+
+  // M on the boxes of this round; the decisions of pairs already met are kept.
+  void rebuild_adjacencies() {
+    BoxStore R(nv_);
+    R.reserve(cells_.size());
+    for (const Cell& c : cells_) R.push(c.box);
+    std::unordered_map<uint64_t, int32_t> index;
+    std::vector<Adj> fresh;
+    for (const NeighborPair& p : neighbor_pairs(tree_, R, periodic_)) {
+      // Every id is queried, a bisected box's too: its pairs are not the cover's.
+      if (!cells_[p.a].alive || !cells_[p.b].alive) continue;
+      const uint64_t key = (uint64_t(uint32_t(p.a)) << 32) | uint32_t(p.b);
+      auto old = adj_index_.find(key);
+      if (old != adj_index_.end()) {
+        fresh.push_back(std::move(adj_[old->second]));
+      } else {
+        Adj e;
+        e.a = p.a, e.b = p.b;
+        e.shifts = touching_shifts(cells_[p.a].box, cells_[p.b].box);
+        if (e.shifts.empty()) {  // M rounds the shifted ends itself: take its shift too
+          std::vector<int> k(nv_);
+          for (int v = 0; v < nv_; ++v) k[v] = p.shift(v);
+          e.shifts.push_back(k);
+        }
+        fresh.push_back(std::move(e));
+      }
+      index[key] = int32_t(fresh.size()) - 1;
+    }
+    adj_ = std::move(fresh);
+    adj_index_ = std::move(index);
+  }
+
+  CountResult run() {
+    CountResult out;
+    for (int round = 0;; ++round) {
+      out.rounds = round + 1;
+      for (size_t c = 0; c < cells_.size(); ++c)
+        if (cells_[c].alive && !cells_[c].decided) decide_cell(int32_t(c));
+      if (stopped()) {
+        out.stop = CountStop::Stopped;
+        bounds_and_open(out, false);
+        break;
+      }
+      rebuild_adjacencies();
+      std::vector<int32_t> refine;
+      CountBounds b = decide_adjacencies_and_bound(refine, out);
+      if (config_.progress) config_.progress(round, b, alive_cells(), config_.progress_data);
+      if (b.exact()) {
+        out.stop = CountStop::Exact;
+        break;
+      }
+      if (stopped()) {
+        out.stop = CountStop::Stopped;
+        break;
+      }
+      if (round + 1 >= config_.max_rounds) {
+        out.stop = CountStop::Rounds;
+        break;
+      }
+      size_t bisected = 0;
+      for (int32_t c : refine)
+        if (cells_[c].alive && bisect(c)) ++bisected, ++out.bisections;
+      if (bisected == 0) {
+        out.stop = CountStop::MinWidth;
+        break;
+      }
+    }
+    out.cells = alive_cells();
+    out.star_boxes = star_boxes_;
+    return out;
+  }
+
+ private:
+  bool stopped() const { return config_.stop && config_.stop->poll(); }
+
+  long alive_cells() const {
+    long n = 0;
+    for (const Cell& c : cells_) n += c.alive;
+    return n;
+  }
+
+  // ----- geometry: b + 2πk against a, outward (may meet) or inward (certainly in both).
+  void shifted(double lo, double hi, int k, double& slo, double& shi) {
+    if (k == 0) {
+      slo = lo, shi = hi;
+      return;
+    }
+    Interval t;
+    mpfi_mul_si(t.get(), two_pi_.get(), k);
+    Interval e;
+    mpfi_add_d(e.get(), t.get(), lo);
+    slo = e.lo_down();
+    mpfi_add_d(e.get(), t.get(), hi);
+    shi = e.hi_up();
+  }
+
+  bool outer_meet(const Box& a, const Box& b, const std::vector<int>& k, Box& out) {
+    out.resize(nv_);
+    for (int v = 0; v < nv_; ++v) {
+      double lo, hi;
+      shifted(b[v].lo_down(), b[v].hi_up(), k[v], lo, hi);
+      lo = std::max(lo, a[v].lo_down());
+      hi = std::min(hi, a[v].hi_up());
+      if (!(lo <= hi)) return false;
+      out[v].set_hull(lo, hi);
+    }
+    return true;
+  }
+
+  bool inner_meet(const Box& a, const Box& b, const std::vector<int>& k, Box& out) {
+    out.resize(nv_);
+    for (int v = 0; v < nv_; ++v) {
+      double lo, hi;
+      if (!inner_intersection(a[v].lo_down(), a[v].hi_up(), b[v].lo_down(), b[v].hi_up(), k[v],
+                              lo, hi))
+        return false;
+      out[v].set_hull(lo, hi);
+    }
+    return true;
+  }
+
+  // Every shift k ∈ {−1, 0, 1} on the periodic variables under which the closed boxes meet.
+  std::vector<std::vector<int>> touching_shifts(const Box& a, const Box& b) {
+    std::vector<std::vector<int>> found;
+    std::vector<int> k(nv_, 0);
+    std::vector<int> per;
+    for (int v = 0; v < nv_; ++v)
+      if (periodic_[v]) per.push_back(v);
+    for (int v : per) k[v] = -1;
+    Box scratch;
+    for (;;) {
+      if (outer_meet(a, b, k, scratch)) found.push_back(k);
+      size_t i = 0;
+      for (; i < per.size(); ++i) {
+        if (++k[per[i]] <= 1) break;
+        k[per[i]] = -1;
+      }
+      if (i == per.size()) break;
+    }
+    return found;
+  }
+
+  // ----- pieces
+  bool class_empty(const std::vector<Interval>& values, uint32_t cls) const {
+    for (size_t i = 0; i < values.size(); ++i) {
+      const bool positive = (cls >> i) & 1;
+      // No point where s_i·g_i > 0: the closed enclosure is on the other side of 0.
+      if (positive ? values[i].hi_up() <= 0 : values[i].lo_down() >= 0) return true;
+    }
+    return false;
+  }
+
+  void decide_cell(int32_t id) {
+    Cell& c = cells_[id];
+    c.decided = true;
+    c.pieces.clear();
+    const int p = fg_.factors();
+    std::vector<Interval> values;
+    const bool defined = fg_.values(ev_, c.box, values);
+    std::vector<uint32_t> classes;
+    for (uint32_t s = 0; s < (uint32_t(1) << p); ++s)
+      if (!defined || !class_empty(values, s)) classes.push_back(s);
+
+    Chart chart;
+    ChartVerdict cv = ChartVerdict::NotProved;
+    if (c.solution) {
+      // P1 of the solve: for every x of [x] one q in [q~] ⊇ [q]; the solve's box holds every
+      // solution of its cell, so V ∩ B is the graph of q over [x].
+      chart.kind = ChartKind::Pose;
+      chart_variables(m_, chart.kind, chart.u, chart.w);
+      chart.w_range.clear();
+      for (int w : chart.w) chart.w_range.push_back(c.box[w]);
+      cv = ChartVerdict::Proved;
+    } else {
+      for (ChartKind kind : {ChartKind::Pose, ChartKind::Command}) {
+        cv = prove_chart(ev_, c.box, kind, ws_, chart);
+        if (cv != ChartVerdict::NotProved) break;
+      }
+    }
+    if (cv == ChartVerdict::NoSolution) {
+      for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+      return;
+    }
+    if (cv == ChartVerdict::Proved) {
+      const int n = m_.n();
+      // z: U × the range of w (every w(u), u ∈ U, lies in it).
+      Box z = c.box;
+      for (int j = 0; j < n; ++j) z[chart.w[j]] = chart.w_range[j];
+      if (!c.solution) {
+        // The box becomes U × (the range of w within the domain): it holds every solution it
+        // held (they are on the graph), and its piece is the graph over U, with no face of W
+        // to cross but the domain's.
+        for (int j = 0; j < n; ++j) {
+          const int v = chart.w[j];
+          double lo = chart.w_range[j].lo_down(), hi = chart.w_range[j].hi_up();
+          if (!periodic_[v]) {
+            lo = std::max(lo, m_.vars[v].domain.lo_down());
+            hi = std::min(hi, m_.vars[v].domain.hi_up());
+          }
+          c.box[v].set_hull(lo, hi);
+        }
+      }
+      bool inside = true;  // w(U) ⊆ W: the graph is over the whole of U
+      for (int j = 0; j < n; ++j)
+        inside = inside && c.box[chart.w[j]].contains(chart.w_range[j]);
+      std::vector<Interval> zv;
+      const bool zdefined = fg_.values(ev_, z, zv);
+      bool certain = zdefined;
+      for (const Interval& x : zv) certain = certain && (x.certainly_pos() || x.certainly_neg());
+      if (certain && inside) {
+        // Every factor has one sign on the graph over U (connected, nonempty): one class.
+        uint32_t cls = 0;
+        for (int i = 0; i < p; ++i) cls |= uint32_t(zv[i].certainly_pos()) << i;
+        for (uint32_t s : classes)
+          c.pieces.push_back({s, s == cls ? PieceState::Connected : PieceState::Empty,
+                              OpenReason::NoPoint});
+        return;
+      }
+      if (c.solution) {
+        // The graph is connected and every factor nonzero on it (P2): it lies in one class,
+        // the class of any of its points.
+        for (uint32_t s : classes) {
+          ClassPoint pt;
+          if (find_class_point(ev_, fg_, c.box, chart.kind, s, ws_, pt, 1) != PointVerdict::Found)
+            continue;
+          for (uint32_t t : classes)
+            c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
+                                OpenReason::NoPoint});
+          return;
+        }
+        for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
+        return;
+      }
+      // The faces of the domain that the graph crosses: constraints of every piece.
+      std::vector<StarConstraint> faces;
+      for (int j = 0; j < n; ++j) {
+        const Interval& W = c.box[chart.w[j]];
+        if (!(chart.w_range[j].lo_down() > W.lo_down()))
+          faces.push_back({StarConstraint::WLower, j, 1, W.lo_down()});
+        if (!(chart.w_range[j].hi_up() < W.hi_up()))
+          faces.push_back({StarConstraint::WUpper, j, 1, W.hi_up()});
+      }
+      for (uint32_t s : classes) {
+        if (zdefined && class_empty(zv, s)) {
+          c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+          continue;
+        }
+        ClassPoint centre;
+        if (find_class_point(ev_, fg_, c.box, chart.kind, s, ws_, centre, 7) != PointVerdict::Found) {
+          c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
+          continue;
+        }
+        std::vector<StarConstraint> tests = faces;
+        for (int i = 0; i < p; ++i)
+          if (!zdefined || !(zv[i].certainly_pos() || zv[i].certainly_neg()))
+            tests.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
+        const bool star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{},
+                                    ws_, star_boxes_) == StarVerdict::StarShaped;
+        c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
+                            OpenReason::NotStar});
+        if (!star) c.split_in_u = int8_t(chart.kind);
+      }
+      return;
+    }
+    for (uint32_t s : classes) {
+      ClassPoint pt;
+      bool found = false;
+      for (ChartKind kind : {ChartKind::Pose, ChartKind::Command})
+        if (!found && find_class_point(ev_, fg_, c.box, kind, s, ws_, pt, 3) == PointVerdict::Found)
+          found = true;
+      c.pieces.push_back({s, found ? PieceState::Nonempty : PieceState::Undecided,
+                          OpenReason::NoChart});
+    }
+  }
+
+  const PieceRec* piece(int32_t cell, uint32_t cls) const {
+    for (const PieceRec& r : cells_[cell].pieces)
+      if (r.cls == cls) return &r;
+    return nullptr;  // the class is certainly absent from the box
+  }
+
+  // ----- adjacencies
+  AdjacencyState try_join(const Adj& e, uint32_t cls) {
+    Box face;
+    for (const std::vector<int>& k : e.shifts) {
+      if (!inner_meet(cells_[e.a].box, cells_[e.b].box, k, face)) continue;
+      // A face flat in a command is reached in the command chart.
+      bool flat_command = false;
+      for (int v : m_.command) flat_command = flat_command || face[v].lo_down() == face[v].hi_up();
+      const ChartKind order[2] = {flat_command ? ChartKind::Command : ChartKind::Pose,
+                                  flat_command ? ChartKind::Pose : ChartKind::Command};
+      ClassPoint pt;
+      for (ChartKind kind : order)
+        if (find_class_point(ev_, fg_, face, kind, cls, ws_, pt, 3) == PointVerdict::Found)
+          return AdjacencyState::Joined;
+    }
+    return AdjacencyState::Undecided;
+  }
+
+  AdjacencyState try_refute(const Adj& e, uint32_t cls) {
+    Box face;
+    std::vector<Interval> values;
+    for (const std::vector<int>& k : e.shifts) {
+      if (!outer_meet(cells_[e.a].box, cells_[e.b].box, k, face)) continue;
+      if (contractor_.contract(face)) continue;  // no solution in the closed intersection
+      if (fg_.values(ev_, face, values) && class_empty(values, cls)) continue;
+      return AdjacencyState::Undecided;
+    }
+    return AdjacencyState::Refuted;
+  }
+
+  CountBounds decide_adjacencies_and_bound(std::vector<int32_t>& refine, CountResult& out) {
+    // The graph of this round: one node per piece of a live cell.
+    CountGraph g;
+    std::vector<std::vector<int32_t>> node(cells_.size());
+    for (size_t c = 0; c < cells_.size(); ++c) {
+      if (!cells_[c].alive) continue;
+      for (const PieceRec& r : cells_[c].pieces) node[c].push_back(g.add_piece(r.cls, r.state));
+    }
+    auto node_of = [&](int32_t cell, uint32_t cls) -> int32_t {
+      if (!cells_[cell].alive || node[cell].size() != cells_[cell].pieces.size())
+        throw std::logic_error("count: adjacency of a cell that is not in the cover (" +
+                               std::to_string(cell) + ")");
+      const auto& ps = cells_[cell].pieces;
+      for (size_t i = 0; i < ps.size(); ++i)
+        if (ps[i].cls == cls) return node[cell][i];
+      return -1;
+    };
+    struct EdgeRef {
+      int32_t adj, klass, edge;
+    };
+    std::vector<EdgeRef> edges;
+    for (size_t a = 0; a < adj_.size(); ++a) {
+      Adj& e = adj_[a];
+      for (const PieceRec& r : cells_[e.a].pieces) {
+        if (r.state == PieceState::Empty) continue;
+        const PieceRec* other = piece(e.b, r.cls);
+        if (!other || other->state == PieceState::Empty) continue;
+        int32_t k = -1;
+        for (size_t i = 0; i < e.classes.size(); ++i)
+          if (e.classes[i].cls == r.cls) k = int32_t(i);
+        if (k < 0) {
+          e.classes.push_back({r.cls});
+          k = int32_t(e.classes.size()) - 1;
+        }
+        const int32_t id = g.add_adjacency(node_of(e.a, r.cls), node_of(e.b, r.cls),
+                                           e.classes[k].state);
+        edges.push_back({int32_t(a), k, id});
+      }
+    }
+    // Join first, across components of H only (a spanning forest of witnesses), then refute
+    // what still separates two components.
+    const int32_t n = g.pieces();
+    std::vector<int32_t> rank(n), parent(n);
+    boost::disjoint_sets<int32_t*, int32_t*> h(rank.data(), parent.data());
+    for (int32_t i = 0; i < n; ++i) h.make_set(i);
+    for (const EdgeRef& r : edges)
+      if (g.adjacency_state(r.edge) == AdjacencyState::Joined)
+        h.union_set(g.end_a(r.edge), g.end_b(r.edge));
+    for (const EdgeRef& r : edges) {
+      ClassEdge& ce = adj_[r.adj].classes[r.klass];
+      const int32_t x = g.end_a(r.edge), y = g.end_b(r.edge);
+      if (ce.tried || h.find_set(x) == h.find_set(y)) continue;
+      if (g.piece_state(x) == PieceState::Undecided && g.piece_state(y) == PieceState::Undecided)
+        continue;  // refined anyway
+      ce.tried = true;
+      ce.state = try_join(adj_[r.adj], ce.cls);
+      if (ce.state == AdjacencyState::Undecided) ce.state = try_refute(adj_[r.adj], ce.cls);
+      if (ce.state == AdjacencyState::Undecided && getenv("COUNT_DEBUG")) {
+        const Adj& e = adj_[r.adj];
+        fprintf(stderr, "UNDECIDED adjacency class %u shifts %zu\n A:", ce.cls, e.shifts.size());
+        for (auto& x : cells_[e.a].box) fprintf(stderr, " %s", x.str().c_str());
+        fprintf(stderr, " sol %d\n B:", cells_[e.a].solution);
+        for (auto& x : cells_[e.b].box) fprintf(stderr, " %s", x.str().c_str());
+        fprintf(stderr, " sol %d\n", cells_[e.b].solution);
+      }
+      g.set_adjacency_state(r.edge, ce.state);
+      if (ce.state == AdjacencyState::Joined) h.union_set(x, y);
+      if (stopped()) break;
+    }
+    const CountBounds b = g.bounds();
+    out.bounds = b;
+    out.pieces = g.pieces();
+    out.adjacencies = g.adjacencies();
+    // What to refine: boxes of open pieces, and both boxes of an undecided adjacency between
+    // two components of H.
+    const std::vector<int32_t> hc = g.joined_components();
+    std::vector<uint8_t> mark(cells_.size(), 0);
+    out.open.clear();
+    auto note = [&](OpenReason why, uint32_t cls, int32_t cell) {
+      if (out.open.size() >= kMaxOpenPlaces) return;
+      OpenPlace place{why, cls, {}, {}};
+      for (const Interval& x : cells_[cell].box) {
+        place.lo.push_back(x.lo_down());
+        place.hi.push_back(x.hi_up());
+      }
+      out.open.push_back(std::move(place));
+    };
+    for (size_t c = 0; c < cells_.size(); ++c) {
+      if (!cells_[c].alive) continue;
+      for (const PieceRec& r : cells_[c].pieces)
+        if (r.state == PieceState::Undecided || r.state == PieceState::Nonempty) {
+          if (!mark[c]) note(r.why, r.cls, int32_t(c));
+          mark[c] = 1;
+        }
+    }
+    for (const EdgeRef& r : edges) {
+      if (g.adjacency_state(r.edge) != AdjacencyState::Undecided) continue;
+      const int32_t x = g.end_a(r.edge), y = g.end_b(r.edge);
+      if (hc[x] == hc[y]) continue;
+      const Adj& e = adj_[r.adj];
+      if (!mark[e.a]) note(OpenReason::Adjacency, e.classes[r.klass].cls, e.a);
+      mark[e.a] = mark[e.b] = 1;
+    }
+    for (size_t c = 0; c < cells_.size(); ++c)
+      if (mark[c]) refine.push_back(int32_t(c));
+    return b;
+  }
+
+  void bounds_and_open(CountResult& out, bool) {
+    rebuild_adjacencies();
+    std::vector<int32_t> unused;
+    decide_adjacencies_and_bound(unused, out);
+  }
+
+  // ----- refinement
+  bool bisect(int32_t id) {
+    const Box box = cells_[id].box;
+    int var = -1;
+    double rel = 0;
+    std::vector<int> vars, u, w;
+    if (cells_[id].split_in_u >= 0) chart_variables(m_, ChartKind(cells_[id].split_in_u), vars, w);
+    for (int pass = 0; pass < 2 && var < 0; ++pass) {
+      if (pass == 1 || vars.empty()) {
+        vars.clear();
+        for (int v = 0; v < nv_; ++v) vars.push_back(v);
+      }
+      for (int v : vars) {
+        const double r = box[v].width_up() / domain_width_[v];
+        if (r > config_.min_width && r > rel) rel = r, var = v;
+      }
+    }
+    if (var < 0) return false;
+    const double mid = box[var].mid();
+    cells_[id].alive = false;
+    const int32_t node = cells_[id].node;
+    if (node < 0 || node >= int32_t(tree_.size()) || tree_[node].leaf() != id)
+      throw std::logic_error("count: a box without its leaf in the tree");
+    const int32_t first = int32_t(tree_.size());
+    for (int half = 0; half < 2; ++half) {
+      Cell c;
+      c.box = box;
+      if (half == 0)
+        c.box[var].set_hull(box[var].lo_down(), mid);
+      else
+        c.box[var].set_hull(mid, box[var].hi_up());
+      SearchNode leaf;
+      leaf.fate = LeafFate::Discarded;
+      if (!contractor_.contract(c.box)) {  // else no solution in this half
+        c.node = first + half;
+        leaf.index = int32_t(cells_.size());
+        leaf.fate = LeafFate::Undecided;
+        cells_.push_back(std::move(c));
+      }
+      tree_.push_back(leaf);
+    }
+    tree_[node].set_children(var, mid, first);
+    return true;
+  }
+
+  Model& m_;
+  const CountConfig& config_;
+  const FactorGradients& fg_;
+  ModelEvaluator ev_;
+  EquationContractor contractor_;
+  HsWorkspace ws_;
+  int nv_;
+  Interval two_pi_;
+  std::vector<bool> periodic_;
+  std::vector<double> domain_width_;
+  std::vector<Cell> cells_;
+  std::vector<Adj> adj_;
+  std::unordered_map<uint64_t, int32_t> adj_index_;  // (a << 32 | b) -> index in adj_
+  std::vector<SearchNode> tree_;
+  long star_boxes_ = 0;
+};
+
+}  // namespace
+
+CountResult count_aspects(Model& model, const CountConfig& config) {
+  if (!model.user_factors.empty())
+    throw std::invalid_argument(
+        "count: models with `factor` statements are not counted yet (a user factor may vanish "
+        "at nonsingular configurations, so its classes need not be the aspects' classes)");
+  if (!model.constraints.empty())
+    throw std::invalid_argument(
+        "count: models with `constraint` statements are not counted yet (the pieces would "
+        "need the constraints' boundaries as factors)");
+  const auto start = std::chrono::steady_clock::now();
+  AspectsConfig ac;
+  ac.eps = config.eps;
+  ac.threads = config.threads;
+  ac.keep_link_proofs = false;
+  ac.stop = config.stop;
+  AspectsResult solved = compute_aspects(model, ac);
+  std::vector<int> nodes;
+  for (const Factor& f : solved.factors) nodes.push_back(f.node);
+  // The derivatives are added to the DAG before the counter's evaluator exists.
+  FactorGradients fg(model, nodes);
+  Counter counter(model, config, fg);
+  counter.add_first_cover(solved);
+  CountResult out = counter.run();
+  out.separation_bound = solved.separation.lower_bound;
+  out.first_cover_boxes = solved.boxes.size();
+  for (const Factor& f : solved.factors) out.factor_text.push_back(f.text + " (" + f.origin + ")");
+  out.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace aspects

@@ -1,0 +1,74 @@
+// Counting the aspects exactly (certificates/FORMAT.md, "Counting"): a cover of the
+// solution set by boxes (a solve's output boxes, then refined where a decision can move a
+// bound), the pieces W_s ∩ B of each box and class decided as empty / connected / nonempty
+// / undecided, the adjacencies between pieces of touching boxes as joined / refuted /
+// undecided, and the two bounds of core/aspects/count_graph.h. Lower = upper is the count.
+//
+// What is refined: boxes holding a piece not proved connected (nor empty), and both boxes
+// of an undecided adjacency between two components of H that G joins. Nothing else: no
+// uniform ε. A box narrower than the least width (relative to the domain) is not bisected;
+// what it leaves open is reported, with the place and the test that failed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "aspects/count_graph.h"
+#include "model/model.h"
+#include "search/stop_condition.h"
+
+namespace aspects {
+
+struct CountConfig {
+  double eps = 0.5;          // ε of the first cover (a uniform solve); refinement is adaptive
+  double min_width = 1e-4;   // relative to the domain: narrower boxes are not bisected
+  int max_rounds = 200;
+  int threads = 1;           // the first cover's search
+  StopCondition* stop = nullptr;
+  // Told after each round (stderr progress).
+  void (*progress)(int round, const CountBounds&, long cells, void* data) = nullptr;
+  void* progress_data = nullptr;
+};
+
+// Why a piece is not proved connected.
+enum class OpenReason : uint8_t {
+  NoChart,     // neither the pose nor the command chart could be proved on the box
+  NoPoint,     // a chart holds, but no certified point of the class was found in the box
+  NotStar,     // the star-shaped test failed about the point found
+  Adjacency,   // an adjacency between two components of H, neither joined nor refuted
+};
+const char* open_reason_name(OpenReason r);
+
+// A place that holds the gap between the bounds.
+struct OpenPlace {
+  OpenReason reason;
+  uint32_t cls;                 // sign class (bit i: factor i positive)
+  std::vector<double> lo, hi;   // the box (model order)
+};
+
+enum class CountStop : uint8_t {
+  Exact,      // lower = upper
+  MinWidth,   // every open place is narrower than the least width
+  Rounds,     // the round budget ran out
+  Stopped,    // the stop condition (time limit, signal)
+};
+const char* count_stop_name(CountStop s);
+
+struct CountResult {
+  CountBounds bounds;
+  CountStop stop = CountStop::Exact;
+  int separation_bound = 0;     // the first cover's separated lower bound (Section 4.4.2)
+  int rounds = 0;
+  long first_cover_boxes = 0, cells = 0, pieces = 0, adjacencies = 0;
+  long bisections = 0, star_boxes = 0;
+  std::vector<OpenPlace> open;  // at most a few, the first found
+  std::vector<std::string> factor_text;
+  double seconds = 0;
+};
+
+// Refuses (ModelError-free std::invalid_argument) models with `factor` or `constraint`
+// statements: their W_s is not yet what the count decides.
+CountResult count_aspects(Model& model, const CountConfig& config);
+
+}  // namespace aspects
