@@ -1,5 +1,6 @@
 #include "hansen_sengupta.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "certificate_grid.h"
@@ -12,13 +13,33 @@ void round_out_to_doubles(Interval& x) { x.set_hull(x.lo_down(), x.hi_up()); }
 
 namespace {
 
+// The Jacobian in the unknowns `u`: each column from Fx or Fq, as its variable is a pose or a
+// command.
+template <class I>
+EvalStatus mixed_jacobian(ModelEvaluator& ev, const Box& box, const std::vector<int>& u,
+                          HsArrays<I>& w) {
+  const Model& m = ev.model();
+  const int n = m.n();
+  if (ev.jacobian_x(box, w.Jx) != EvalStatus::Defined) return EvalStatus::Undefined;
+  if (ev.jacobian_q(box, w.Jq) != EvalStatus::Defined) return EvalStatus::Undefined;
+  if (w.J.rows() != n) w.J = Matrix<I>(n, n);
+  for (int j = 0; j < n; ++j) {
+    const auto p = std::find(m.pose.begin(), m.pose.end(), u[j]);
+    const bool pose = p != m.pose.end();
+    const int col = pose ? int(p - m.pose.begin())
+                         : int(std::find(m.command.begin(), m.command.end(), u[j]) - m.command.begin());
+    for (int i = 0; i < n; ++i) w.J(i, j) = pose ? w.Jx(i, col) : w.Jq(i, col);
+  }
+  return EvalStatus::Defined;
+}
+
 template <class I>
 HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<Interval>& image,
-               HsWorkspace& ws, HsArrays<I>& w, bool in_pose) {
+               HsWorkspace& ws, HsArrays<I>& w, bool in_pose, const std::vector<int>* unknowns) {
   using namespace iops;
   const Model& m = ev.model();
   const int n = m.n();
-  const std::vector<int>& u = in_pose ? m.pose : m.command;  // the unknowns
+  const std::vector<int>& u = unknowns ? *unknowns : in_pose ? m.pose : m.command;  // the unknowns
   // Mean-value form around a point of [q]: f(x,q) = f(x,q̌) + Fq(x,ξ)(q − q̌).
   ws.mid_box = box;
   std::vector<double> qmid(n);
@@ -30,7 +51,9 @@ HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<I
     assign(w.q[j], box[u[j]]);
   }
   if (ev.equations(ws.mid_box, w.f0) != EvalStatus::Defined) return HsStatus::Failed;
-  const EvalStatus J = in_pose ? ev.jacobian_x(box, w.J) : ev.jacobian_q(box, w.J);
+  const EvalStatus J = unknowns  ? mixed_jacobian(ev, box, u, w)
+                       : in_pose ? ev.jacobian_x(box, w.J)
+                                 : ev.jacobian_q(box, w.J);
   if (J != EvalStatus::Defined) return HsStatus::Failed;
   if (!approximate_inverse(w.J, ws.C)) return HsStatus::Failed;
   if (w.A.rows() != n) w.A = Matrix<I>(n, n);
@@ -73,10 +96,11 @@ HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<I
 }  // namespace
 
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
-                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose) {
+                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose,
+                         const std::vector<int>* unknowns) {
   ws.in_doubles = double_fast_path() && working_precision() == 53;
-  if (ws.in_doubles) return sweep(ev, box, intersect, image, ws, ws.doubles, in_pose);
-  return sweep(ev, box, intersect, image, ws, ws.mpfi, in_pose);
+  if (ws.in_doubles) return sweep(ev, box, intersect, image, ws, ws.doubles, in_pose, unknowns);
+  return sweep(ev, box, intersect, image, ws, ws.mpfi, in_pose, unknowns);
 }
 
 namespace {
@@ -101,10 +125,10 @@ bool pose_spreads(const HsWorkspace& ws, const std::vector<Interval>& q) {
 
 Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
                           ExistenceProof& proof, HsWorkspace& ws, bool in_pose,
-                          const Box* grid) {
+                          const Box* grid, const std::vector<int>* unknowns) {
   const Model& m = ev.model();
   const int n = m.n();
-  const std::vector<int>& u = in_pose ? m.pose : m.command;
+  const std::vector<int>& u = unknowns ? *unknowns : in_pose ? m.pose : m.command;
   Box work = box;
   proof.inflated.resize(n);
   std::vector<Interval> y;
@@ -128,7 +152,7 @@ Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int ma
       q.set_hull(nlo, nhi);
       proof.inflated[j] = q;
     }
-    HsStatus s = hansen_sengupta(ev, work, false, y, ws, in_pose);
+    HsStatus s = hansen_sengupta(ev, work, false, y, ws, in_pose, unknowns);
     if (s != HsStatus::Ok) return failure;
     if (k == 0 && pose_spreads(ws, proof.inflated)) failure = Existence::PoseSpread;
     bool inside = true;

@@ -26,6 +26,7 @@ template <class I>
 struct HsArrays {
   std::vector<I> f0, b, q, y;  // q: the unknowns' box, y: their image
   Matrix<I> J, A;
+  Matrix<I> Jx, Jq;  // a chart of mixed unknowns: both Jacobians, J from their columns
   I t1, t2;
 };
 
@@ -44,8 +45,11 @@ struct HsWorkspace {
 // with the box (the contracting operator used by Prune). C is left in ws.C.
 // With `in_pose` the roles swap: the pose is unknown, the commands are the parameters and
 // Fx replaces Fq (the existence proof in x of cuspidality witnesses, core/aspects/cuspidality.h).
+// With `unknowns` (n variable indices, model order), those are the unknowns and the others
+// the parameters, whatever their kind (a chart of the counting, proofs/counting/chart.h).
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
-                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose = false);
+                         std::vector<Interval>& image, HsWorkspace& ws, bool in_pose = false,
+                         const std::vector<int>* unknowns = nullptr);
 
 struct ExistenceProof {
   std::vector<Interval> inflated;  // [q̃k], double endpoints
@@ -67,7 +71,7 @@ enum class Existence {
 // that unknown's interval in *grid, the reference a format 3 certificate codes it against.
 Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int max_iterations,
                           ExistenceProof& proof, HsWorkspace& ws, bool in_pose = false,
-                          const Box* grid = nullptr);
+                          const Box* grid = nullptr, const std::vector<int>* unknowns = nullptr);
 
 // Rounds both ends outward to doubles (a superset; identity at 53 bits).
 void round_out_to_doubles(Interval& x);

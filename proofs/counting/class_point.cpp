@@ -7,15 +7,6 @@
 
 namespace aspects {
 
-Box point_box(const Model& m, const ClassPoint& p) {
-  std::vector<int> u, w;
-  chart_variables(m, p.kind, u, w);
-  Box b(m.vars.size());
-  for (size_t k = 0; k < u.size(); ++k) b[u[k]].set_point(p.u[k]);
-  for (size_t j = 0; j < w.size(); ++j) b[w[j]] = p.w[j];
-  return b;
-}
-
 namespace {
 
 struct Candidate {
@@ -24,21 +15,27 @@ struct Candidate {
 };
 
 // Newton in doubles for w at the u-point, from the middle of the box's w-part: a choice.
-bool newton_w(ModelEvaluator& ev, const Box& box,
-              const std::vector<int>& w, bool pose_u, std::vector<double>& wpt) {
+bool newton_w(ModelEvaluator& ev, const Box& box, const std::vector<int>& w,
+              std::vector<double>& wpt) {
   const int n = ev.n();
   Box pt = box;
   for (int j = 0; j < n; ++j) pt[w[j]].set_point(box[w[j]].mid());
+  const Model& m = ev.model();
   std::vector<Interval> f;
-  IMatrix J;
+  IMatrix Jx, Jq;
   Eigen::MatrixXd A(n, n);
   Eigen::VectorXd b(n);
   for (int it = 0; it < 30; ++it) {
     if (ev.equations(pt, f) != EvalStatus::Defined) return false;
-    if ((pose_u ? ev.jacobian_q(pt, J) : ev.jacobian_x(pt, J)) != EvalStatus::Defined) return false;
-    for (int i = 0; i < n; ++i) {
-      b(i) = f[i].mid();
-      for (int j = 0; j < n; ++j) A(i, j) = J(i, j).mid();
+    if (ev.jacobian_x(pt, Jx) != EvalStatus::Defined || ev.jacobian_q(pt, Jq) != EvalStatus::Defined)
+      return false;
+    for (int i = 0; i < n; ++i) b(i) = f[i].mid();
+    for (int j = 0; j < n; ++j) {
+      const auto p = std::find(m.pose.begin(), m.pose.end(), w[j]);
+      const bool pose = p != m.pose.end();
+      const int col = pose ? int(p - m.pose.begin())
+                           : int(std::find(m.command.begin(), m.command.end(), w[j]) - m.command.begin());
+      for (int i = 0; i < n; ++i) A(i, j) = (pose ? Jx(i, col) : Jq(i, col)).mid();
     }
     Eigen::VectorXd dx = A.fullPivLu().solve(b);
     if (!dx.allFinite()) return false;
@@ -61,13 +58,11 @@ bool newton_w(ModelEvaluator& ev, const Box& box,
 }  // namespace
 
 PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
-                              ChartKind kind, uint32_t cls, HsWorkspace& ws, ClassPoint& out,
-                              int per_axis) {
+                              const std::vector<int>& w, uint32_t cls, HsWorkspace& ws,
+                              ClassPoint& out, int per_axis) {
   const Model& m = ev.model();
   const int n = ev.n(), p = fg.factors();
-  std::vector<int> u, w;
-  chart_variables(m, kind, u, w);
-  const bool pose_u = kind == ChartKind::Pose;
+  const std::vector<int> u = chart_complement(m, w);
   // The grid of u-points: per axis the centres of per_axis equal cells (one point on a
   // degenerate axis).
   std::vector<Candidate> found;
@@ -85,7 +80,7 @@ PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, con
       c.u[k] = std::min(hi, std::max(lo, lo + (hi - lo) * (idx[k] + 0.5) / cells));
       pt[u[k]].set_point(c.u[k]);
     }
-    if (newton_w(ev, pt, w, pose_u, c.w)) {
+    if (newton_w(ev, pt, w, c.w)) {
       for (int j = 0; j < n; ++j) pt[w[j]].set_point(c.w[j]);
       if (fg.values(ev, pt, values)) {
         // The depth of the point in the piece: the least of the factors' margins (relative
@@ -126,7 +121,8 @@ PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, con
       const double r = 1e-12 * (1 + std::fabs(c.w[j]));
       z[w[j]].set_hull(c.w[j] - r, c.w[j] + r);
     }
-    if (prove_existence(ev, z, 1.01, 12, proof, ws, !pose_u) != Existence::Proved) continue;
+    if (prove_existence(ev, z, 1.01, 12, proof, ws, false, nullptr, &w) != Existence::Proved)
+      continue;
     bool inside = true;
     for (int j = 0; j < n; ++j) {
       if (!box[w[j]].contains(proof.image[j])) inside = false;
@@ -139,7 +135,8 @@ PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, con
       if (!(positive ? values[i].certainly_pos() : values[i].certainly_neg())) signs = false;
     }
     if (!signs) continue;
-    out.kind = kind;
+    out.u_vars = u;
+    out.w_vars = w;
     out.u = c.u;
     out.w = proof.image;
     return PointVerdict::Found;

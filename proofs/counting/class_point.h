@@ -15,19 +15,17 @@
 namespace aspects {
 
 struct ClassPoint {
-  ChartKind kind = ChartKind::Pose;
-  std::vector<double> u;         // the chart's u-point, n doubles (chart_variables order)
-  std::vector<Interval> w;       // the enclosure of its unique w
+  std::vector<int> u_vars, w_vars;  // the chart's variables
+  std::vector<double> u;            // the u-point, n doubles (u_vars order)
+  std::vector<Interval> w;          // the enclosure of its unique w (w_vars order)
 };
 
 enum class PointVerdict : uint8_t { Found, NotFound };
 
-// cls: bit i set when factor i is positive. per_axis: grid points per u-axis.
+// w_vars: the chart's w (the unknowns). cls: bit i set when factor i is positive.
+// per_axis: grid points per u-axis.
 PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
-                              ChartKind kind, uint32_t cls, HsWorkspace& ws, ClassPoint& out,
-                              int per_axis = 5);
-
-// The point as a box in model order (u exact, w its enclosure).
-Box point_box(const Model& m, const ClassPoint& p);
+                              const std::vector<int>& w_vars, uint32_t cls, HsWorkspace& ws,
+                              ClassPoint& out, int per_axis = 5);
 
 }  // namespace aspects

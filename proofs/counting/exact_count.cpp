@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -14,6 +12,7 @@
 #include "contractor.h"
 #include "counting/chart.h"
 #include "counting/class_point.h"
+#include "counting/empty_piece.h"
 #include "counting/factor_gradients.h"
 #include "counting/star_test.h"
 #include "generalized_aspects.h"
@@ -58,7 +57,7 @@ struct Cell {
   bool alive = true;
   // A chart held but a star test failed: bisect its u (a shorter graph is straighter; a
   // bisection in w only cuts the graph into thinner, as curved, strips).
-  int8_t split_in_u = -1;  // -1, or the ChartKind whose u to bisect
+  std::vector<int> split_in;  // empty, or the chart's u, to bisect
   std::vector<PieceRec> pieces;
   int32_t node = -1;           // its leaf in the refinement tree
 };
@@ -273,14 +272,14 @@ class Counter {
     if (c.solution) {
       // P1 of the solve: for every x of [x] one q in [q~] ⊇ [q]; the solve's box holds every
       // solution of its cell, so V ∩ B is the graph of q over [x].
-      chart.kind = ChartKind::Pose;
-      chart_variables(m_, chart.kind, chart.u, chart.w);
+      chart.w = m_.command;
+      chart.u = m_.pose;
       chart.w_range.clear();
       for (int w : chart.w) chart.w_range.push_back(c.box[w]);
       cv = ChartVerdict::Proved;
     } else {
-      for (ChartKind kind : {ChartKind::Pose, ChartKind::Command}) {
-        cv = prove_chart(ev_, c.box, kind, ws_, chart);
+      for (const std::vector<int>& w : chart_candidates(ev_, c.box)) {
+        cv = prove_chart(ev_, c.box, w, ws_, chart);
         if (cv != ChartVerdict::NotProved) break;
       }
     }
@@ -328,7 +327,7 @@ class Counter {
         // the class of any of its points.
         for (uint32_t s : classes) {
           ClassPoint pt;
-          if (find_class_point(ev_, fg_, c.box, chart.kind, s, ws_, pt, 1) != PointVerdict::Found)
+          if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, pt, 1) != PointVerdict::Found)
             continue;
           for (uint32_t t : classes)
             c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
@@ -341,10 +340,11 @@ class Counter {
       // The faces of the domain that the graph crosses: constraints of every piece.
       std::vector<StarConstraint> faces;
       for (int j = 0; j < n; ++j) {
+        // The box is the range clipped to the domain: where it was clipped, the graph leaves.
         const Interval& W = c.box[chart.w[j]];
-        if (!(chart.w_range[j].lo_down() > W.lo_down()))
+        if (chart.w_range[j].lo_down() < W.lo_down())
           faces.push_back({StarConstraint::WLower, j, 1, W.lo_down()});
-        if (!(chart.w_range[j].hi_up() < W.hi_up()))
+        if (chart.w_range[j].hi_up() > W.hi_up())
           faces.push_back({StarConstraint::WUpper, j, 1, W.hi_up()});
       }
       for (uint32_t s : classes) {
@@ -353,8 +353,10 @@ class Counter {
           continue;
         }
         ClassPoint centre;
-        if (find_class_point(ev_, fg_, c.box, chart.kind, s, ws_, centre, 7) != PointVerdict::Found) {
-          c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
+        if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, centre, 4) != PointVerdict::Found) {
+          const bool empty = prove_piece_empty(ev_, fg_, chart, z, s, ws_) == EmptyVerdict::Empty;
+          c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
+                              OpenReason::NoPoint});
           continue;
         }
         std::vector<StarConstraint> tests = faces;
@@ -365,19 +367,13 @@ class Counter {
                                     ws_, star_boxes_) == StarVerdict::StarShaped;
         c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
                             OpenReason::NotStar});
-        if (!star) c.split_in_u = int8_t(chart.kind);
+        if (!star) c.split_in = chart.u;
       }
       return;
     }
-    for (uint32_t s : classes) {
-      ClassPoint pt;
-      bool found = false;
-      for (ChartKind kind : {ChartKind::Pose, ChartKind::Command})
-        if (!found && find_class_point(ev_, fg_, c.box, kind, s, ws_, pt, 3) == PointVerdict::Found)
-          found = true;
-      c.pieces.push_back({s, found ? PieceState::Nonempty : PieceState::Undecided,
-                          OpenReason::NoChart});
-    }
+    // No chart: the box is bisected whatever else is proved of it (a point would only show
+    // its piece nonempty, which the solution boxes already do for the lower bound).
+    for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
   }
 
   const PieceRec* piece(int32_t cell, uint32_t cls) const {
@@ -391,17 +387,54 @@ class Counter {
     Box face;
     for (const std::vector<int>& k : e.shifts) {
       if (!inner_meet(cells_[e.a].box, cells_[e.b].box, k, face)) continue;
-      // A face flat in a command is reached in the command chart.
-      bool flat_command = false;
-      for (int v : m_.command) flat_command = flat_command || face[v].lo_down() == face[v].hi_up();
-      const ChartKind order[2] = {flat_command ? ChartKind::Command : ChartKind::Pose,
-                                  flat_command ? ChartKind::Pose : ChartKind::Command};
+      // A face flat in a variable is reached in a chart where that variable is u.
+      std::vector<std::vector<int>> charts = chart_candidates(ev_, face);
+      std::stable_partition(charts.begin(), charts.end(), [&](const std::vector<int>& w) {
+        for (int v : w)
+          if (face[v].lo_down() == face[v].hi_up()) return false;
+        return true;
+      });
       ClassPoint pt;
-      for (ChartKind kind : order)
-        if (find_class_point(ev_, fg_, face, kind, cls, ws_, pt, 3) == PointVerdict::Found)
+      for (const std::vector<int>& w : charts)
+        if (find_class_point(ev_, fg_, face, w, cls, ws_, pt, 3) == PointVerdict::Found)
           return AdjacencyState::Joined;
     }
+    // Boxes that meet only at a corner of the graph leave no room for a witness: a bridge
+    // instead. With C the hull of both boxes, a chart on C makes V ∩ C a graph over U_C;
+    // when the graph stays in the domain and every factor has the sign of the class on
+    // U_C × (its range), that graph is a connected subset of W_s holding both pieces (each
+    // box lies in C), so they are in one aspect.
+    for (const std::vector<int>& k : e.shifts) {
+      Box hull = cells_[e.a].box;
+      for (int v = 0; v < nv_; ++v) {
+        double lo, hi;
+        shifted(cells_[e.b].box[v].lo_down(), cells_[e.b].box[v].hi_up(), k[v], lo, hi);
+        hull[v].set_hull(std::min(lo, hull[v].lo_down()), std::max(hi, hull[v].hi_up()));
+      }
+      if (bridged(hull, cls)) return AdjacencyState::Joined;
+    }
     return AdjacencyState::Undecided;
+  }
+
+  bool bridged(const Box& hull, uint32_t cls) {
+    Chart chart;
+    std::vector<Interval> values;
+    for (const std::vector<int>& w : chart_candidates(ev_, hull)) {
+      if (prove_chart(ev_, hull, w, ws_, chart) != ChartVerdict::Proved) continue;
+      Box z = hull;
+      bool in_domain = true;
+      for (size_t j = 0; j < chart.w.size(); ++j) {
+        const int v = chart.w[j];
+        z[v] = chart.w_range[j];
+        if (!periodic_[v] && !m_.vars[v].domain.contains(z[v])) in_domain = false;
+      }
+      if (!in_domain || !fg_.values(ev_, z, values)) continue;
+      bool all = true;
+      for (size_t i = 0; i < values.size(); ++i)
+        all = all && ((cls >> i) & 1 ? values[i].certainly_pos() : values[i].certainly_neg());
+      if (all) return true;
+    }
+    return false;
   }
 
   AdjacencyState try_refute(const Adj& e, uint32_t cls) {
@@ -468,19 +501,13 @@ class Counter {
       ClassEdge& ce = adj_[r.adj].classes[r.klass];
       const int32_t x = g.end_a(r.edge), y = g.end_b(r.edge);
       if (ce.tried || h.find_set(x) == h.find_set(y)) continue;
-      if (g.piece_state(x) == PieceState::Undecided && g.piece_state(y) == PieceState::Undecided)
-        continue;  // refined anyway
+      // A piece not proved connected is refined anyway: its adjacencies are decided on its
+      // halves.
+      if (g.piece_state(x) != PieceState::Connected || g.piece_state(y) != PieceState::Connected)
+        continue;
       ce.tried = true;
       ce.state = try_join(adj_[r.adj], ce.cls);
       if (ce.state == AdjacencyState::Undecided) ce.state = try_refute(adj_[r.adj], ce.cls);
-      if (ce.state == AdjacencyState::Undecided && getenv("COUNT_DEBUG")) {
-        const Adj& e = adj_[r.adj];
-        fprintf(stderr, "UNDECIDED adjacency class %u shifts %zu\n A:", ce.cls, e.shifts.size());
-        for (auto& x : cells_[e.a].box) fprintf(stderr, " %s", x.str().c_str());
-        fprintf(stderr, " sol %d\n B:", cells_[e.a].solution);
-        for (auto& x : cells_[e.b].box) fprintf(stderr, " %s", x.str().c_str());
-        fprintf(stderr, " sol %d\n", cells_[e.b].solution);
-      }
       g.set_adjacency_state(r.edge, ce.state);
       if (ce.state == AdjacencyState::Joined) h.union_set(x, y);
       if (stopped()) break;
@@ -535,8 +562,7 @@ class Counter {
     const Box box = cells_[id].box;
     int var = -1;
     double rel = 0;
-    std::vector<int> vars, u, w;
-    if (cells_[id].split_in_u >= 0) chart_variables(m_, ChartKind(cells_[id].split_in_u), vars, w);
+    std::vector<int> vars = cells_[id].split_in;
     for (int pass = 0; pass < 2 && var < 0; ++pass) {
       if (pass == 1 || vars.empty()) {
         vars.clear();

@@ -35,10 +35,23 @@ double mag(const Interval& x) { return std::max(std::fabs(x.lo_down()), std::fab
 bool FactorGradients::implicit_jacobian(ModelEvaluator& ev, const Chart& chart, const Box& z,
                                         IMatrix& X) const {
   const int n = ev.n();
-  IMatrix Ju, Jw;  // ∂_u f, ∂_w f
-  const bool pose_u = chart.kind == ChartKind::Pose;
-  if ((pose_u ? ev.jacobian_x(z, Ju) : ev.jacobian_q(z, Ju)) != EvalStatus::Defined) return false;
-  if ((pose_u ? ev.jacobian_q(z, Jw) : ev.jacobian_x(z, Jw)) != EvalStatus::Defined) return false;
+  const Model& m = ev.model();
+  IMatrix Jx, Jq;
+  if (ev.jacobian_x(z, Jx) != EvalStatus::Defined || ev.jacobian_q(z, Jq) != EvalStatus::Defined)
+    return false;
+  // ∂_u f and ∂_w f: each column from Fx or Fq, as its variable is a pose or a command.
+  IMatrix Ju(n, n), Jw(n, n);
+  auto column = [&](int var, IMatrix& into, int j) {
+    const auto p = std::find(m.pose.begin(), m.pose.end(), var);
+    const bool pose = p != m.pose.end();
+    const int col = pose ? int(p - m.pose.begin())
+                         : int(std::find(m.command.begin(), m.command.end(), var) - m.command.begin());
+    for (int i = 0; i < n; ++i) into(i, j) = pose ? Jx(i, col) : Jq(i, col);
+  };
+  for (int j = 0; j < n; ++j) {
+    column(chart.u[j], Ju, j);
+    column(chart.w[j], Jw, j);
+  }
   std::vector<double> C;
   if (!approximate_inverse(Jw, C)) return false;
   IMatrix E(n, n), B(n, n);

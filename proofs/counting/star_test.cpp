@@ -1,8 +1,6 @@
 #include "counting/star_test.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 
 namespace aspects {
 
@@ -51,7 +49,7 @@ void narrow_w(ModelEvaluator& ev, const Chart& chart, Box& z, HsWorkspace& ws,
   for (int sweep = 0; sweep < 6; ++sweep) {
     double before = 0, after = 0;
     for (int j = 0; j < n; ++j) before += z[chart.w[j]].width_up();
-    if (hansen_sengupta(ev, z, true, image, ws, chart.kind == ChartKind::Command) != HsStatus::Ok)
+    if (hansen_sengupta(ev, z, true, image, ws, false, &chart.w) != HsStatus::Ok)
       return;
     for (int j = 0; j < n; ++j) {
       z[chart.w[j]] = image[j];
@@ -79,21 +77,35 @@ StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart
   for (int k = 0; k < n; ++k) centre[chart.u[k]].set_point(v[k]);
   for (int j = 0; j < n; ++j) centre[chart.w[j]] = wv[j];
   for (size_t c = 0; c < nc; ++c)
-    if (!value(ev, fg, chart, centre, cs[c], values, psi[c]) || !psi[c].certainly_pos())
+    if (!value(ev, fg, chart, centre, cs[c], values, psi[c]) || !psi[c].certainly_pos()) {
       return StarVerdict::NotProved;
+    }
 
   std::vector<double> least(n);
   for (int k = 0; k < n; ++k) least[k] = limits.min_width * box[chart.u[k]].width_up();
   std::vector<Box> stack{box};
   std::vector<uint8_t> defined(nc);
+  long paved = 0;
   while (!stack.empty()) {
     Box z = std::move(stack.back());
     stack.pop_back();
-    if (++boxes > limits.max_boxes) return StarVerdict::NotProved;
+    ++boxes;
+    if (++paved > limits.max_boxes) {
+      return StarVerdict::NotProved;
+    }
     narrow_w(ev, chart, z, ws, image);
     bool negative = false, strict_can_be_positive = true;
+    const bool factors_defined = fg.values(ev, z, values);  // once for every factor constraint
     for (size_t c = 0; c < nc; ++c) {
-      defined[c] = value(ev, fg, chart, z, cs[c], values, psi[c]);
+      if (cs[c].kind == StarConstraint::Factor) {
+        defined[c] = factors_defined;
+        if (factors_defined) {
+          psi[c] = values[cs[c].index];
+          if (cs[c].sign < 0) mpfi_neg(psi[c].get(), psi[c].get());
+        }
+      } else {
+        defined[c] = value(ev, fg, chart, z, cs[c], values, psi[c]);
+      }
       if (!defined[c]) continue;
       negative = negative || psi[c].certainly_neg();
       if (cs[c].kind == StarConstraint::Factor && psi[c].hi_up() <= 0)
@@ -131,15 +143,6 @@ StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart
       if (r > rel) rel = r, best = k;
     }
     if (best < 0) {
-      if (getenv("COUNT_DEBUG")) {
-        fprintf(stderr, "LEAST: v=(%.17g,%.17g)\n box:", v[0], v.size() > 1 ? v[1] : 0.0);
-        for (auto& x : box) fprintf(stderr, " %s", x.str().c_str());
-        fprintf(stderr, "\n z:");
-        for (auto& x : z) fprintf(stderr, " %s", x.str().c_str());
-        fprintf(stderr, "\n");
-        for (size_t c = 0; c < nc; ++c) fprintf(stderr, "  c%zu kind %d idx %d bound %.17g psi %s\n", c, cs[c].kind, cs[c].index, cs[c].bound, psi[c].str().c_str());
-        fprintf(stderr, "  d %s\n", d.str().c_str());
-      }
       return StarVerdict::NotProved;
     }
     const int var = chart.u[best];

@@ -40,7 +40,7 @@ struct StarConstraint {
 
 struct StarLimits {
   double min_width = 1e-6;  // relative to the box's width
-  long max_boxes = 20000;
+  long max_boxes = 2000;  // past it the box is bisected instead (a smaller box is easier)
 };
 
 // `box`: U × the chart's range of w (every w(u) lies in it). v: the centre's u (n doubles),

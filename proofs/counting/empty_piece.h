@@ -1,0 +1,20 @@
+// A piece proved empty by paving: in a chart over U (counting/chart.h), the class s has no
+// point when every part of a paving of U has a factor whose enclosure s_i·g_i(S, W_S) is
+// ≤ 0 (W_S an enclosure of w over S). Finer than one enclosure over the whole box, which
+// the dependency problem widens past a factor's small value.
+#pragma once
+
+#include <cstdint>
+
+#include "counting/factor_gradients.h"
+
+namespace aspects {
+
+enum class EmptyVerdict : uint8_t { Empty, NotProved };
+
+// `box`: U × the chart's range of w. max_boxes: the paving's budget.
+EmptyVerdict prove_piece_empty(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart,
+                               const Box& box, uint32_t cls, HsWorkspace& ws,
+                               long max_boxes = 256);
+
+}  // namespace aspects
