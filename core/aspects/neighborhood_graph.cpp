@@ -54,20 +54,21 @@ struct Hulls {
     h.resize(size_t(hulls) * 2 * nv);
     for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
     last.assign(size_t(hulls), -1);
+    std::vector<int32_t> stack;  // unite's
     for (size_t i = tree.size(); i-- > 0;)
       if (slot[i] >= 0) {
         float* hull = &h[size_t(slot[i]) * 2 * nv];
-        unite(tree[i].left(), hull, last[slot[i]]);
-        unite(tree[i].right(), hull, last[slot[i]]);
+        unite(tree[i].left(), hull, last[slot[i]], stack);
+        unite(tree[i].right(), hull, last[slot[i]], stack);
       }
   }
 
   // hull ∪= the output boxes below `node` (whose hull, if it has one, is already made), and
-  // last_id := max(last_id, their largest id). Iterative (the union takes any order): a
-  // stopped search leaves trees tens of thousands of levels deep.
-  void unite(int32_t node, float* hull, int32_t& last_id) const {
+  // last_id := max(last_id, their largest id). Iterative, on `stack` (the union takes any
+  // order): a stopped search leaves trees tens of thousands of levels deep.
+  void unite(int32_t node, float* hull, int32_t& last_id, std::vector<int32_t>& stack) const {
     const int nv = R.nv();
-    std::vector<int32_t> stack{node};
+    stack.assign(1, node);
     while (!stack.empty()) {
       const int32_t i = stack.back();
       stack.pop_back();
