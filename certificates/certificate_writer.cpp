@@ -214,7 +214,10 @@ TreeSink* CertificateWriter::subtree(int32_t task, const Box& root) {
 // One part's records being copied into the certificate, up to its next deferred subtree.
 struct CertificateWriter::Splicing {
   TreeRecordFile* stream = nullptr;
-  std::unique_ptr<FILE, int (*)(FILE*)> in{nullptr, std::fclose};
+  struct Close {
+    void operator()(FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<FILE, Close> in;
   long left = 0;  // format 2: bytes not read yet; format 3: the records' bytes (no trailer)
   long at = 0;    // format 3: bytes copied
   size_t mark = 0;  // format 3: the next of stream->marks()
