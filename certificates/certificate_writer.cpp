@@ -4,8 +4,10 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdarg>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -62,6 +64,7 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
 
 // An unfinished certificate's temporary is removed by file_.
 CertificateWriter::~CertificateWriter() {
+  std::free(line_);
   if (compressed_ && f_) std::fclose(f_);
   if (spool_) {
     std::fclose(spool_);
@@ -208,22 +211,78 @@ TreeSink* CertificateWriter::subtree(int32_t task, const Box& root) {
   return tasks_[task].get();
 }
 
-// Copies a subtree's records, giving output boxes their global ids (depth-first order)
-// and replacing each deferred-subtree marker by that subtree's records.
-void CertificateWriter::splice(TreeRecordFile& stream) {
-  if (stream.binary()) return splice_binary(stream);
-  stream.close();
-  long left = 0;
-  FILE* in = open_records(stream, &left);
-  char* buf = nullptr;
-  size_t cap = 0;
-  ssize_t len;
-  while (left > 0 && (len = getline(&buf, &cap, in)) > 0) {
-    left -= long(len);
-    if (buf[0] == '@') {
-      splice(task_records(int32_t(std::stol(buf + 1))));
+// One part's records being copied into the certificate, up to its next deferred subtree.
+struct CertificateWriter::Splicing {
+  TreeRecordFile* stream = nullptr;
+  struct Close {
+    void operator()(FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<FILE, Close> in;
+  long left = 0;  // format 2: bytes not read yet; format 3: the records' bytes (no trailer)
+  long at = 0;    // format 3: bytes copied
+  size_t mark = 0;  // format 3: the next of stream->marks()
+  uint64_t count[2] = {0, 0};  // format 3: the trailer's records and leaves
+};
+
+// Copies the top's records, each deferred subtree's records spliced at its place, depth
+// first: output boxes get their global ids (format 2; format 3's are implied). The parts
+// being copied are an explicit stack, not recursion, whatever the nesting.
+void CertificateWriter::splice(TreeRecordFile& top) {
+  std::vector<Splicing> stack;
+  stack.push_back(open_splicing(top));
+  while (!stack.empty()) {
+    TreeRecordFile* next = copy_until_subtree(stack.back());
+    if (next) {
+      stack.push_back(open_splicing(*next));
       continue;
     }
+    end_splicing(stack.back());
+    stack.pop_back();
+  }
+}
+
+CertificateWriter::Splicing CertificateWriter::open_splicing(TreeRecordFile& stream) {
+  stream.close();
+  Splicing s;
+  s.stream = &stream;
+  long all = 0;
+  s.in.reset(open_records(stream, &all));
+  s.left = all;
+  if (!stream.binary()) return s;
+  // Format 3: the trailer gives the records and leaves the part counts.
+  unsigned char trailer[16];
+  s.left = all - 16;
+  FILE* in = s.in.get();
+  if (s.left < 0 || std::fseek(in, stream.begin() + s.left, SEEK_SET) != 0 ||
+      std::fread(trailer, 1, 16, in) != 16 || std::fseek(in, stream.begin(), SEEK_SET) != 0)
+    throw std::runtime_error("cannot read " + stream.path());
+  for (int i = 0; i < 16; ++i) s.count[i / 8] |= uint64_t(trailer[i]) << (8 * (i % 8));
+  return s;
+}
+
+// Copies `s`'s records up to its next deferred subtree, which it returns (null: to its end).
+TreeRecordFile* CertificateWriter::copy_until_subtree(Splicing& s) {
+  FILE* in = s.in.get();
+  if (s.stream->binary()) {
+    // Format 3: the records as they are (ids are implied), each subtree at its mark.
+    const std::vector<TreeRecordFile::Mark>& marks = s.stream->marks();
+    const bool subtree = s.mark < marks.size();
+    const long to = subtree ? marks[s.mark].offset : s.left;
+    if (copy_buffer_.empty()) copy_buffer_.resize(1 << 20);
+    while (s.at < to) {
+      const size_t want = size_t(std::min<long>(to - s.at, long(copy_buffer_.size())));
+      const size_t k = std::fread(copy_buffer_.data(), 1, want, in);
+      if (k == 0) throw std::runtime_error("cannot read " + s.stream->path());
+      std::fwrite(copy_buffer_.data(), 1, k, f_);
+      s.at += long(k);
+    }
+    return subtree ? &task_records(marks[s.mark++].task) : nullptr;
+  }
+  ssize_t len;
+  while (s.left > 0 && (len = getline(&line_, &line_size_, in)) > 0) {
+    const char* buf = line_;
+    s.left -= long(len);
+    if (buf[0] == '@') return &task_records(int32_t(std::stol(buf + 1)));
     if ((buf[0] == 'U' || buf[0] == 'S' || buf[0] == 'N') && buf[1] == ' ') {
       const char* rest = std::strchr(buf + 2, ' ');
       put("%c %ld", buf[0], leaves_++);
@@ -236,46 +295,18 @@ void CertificateWriter::splice(TreeRecordFile& stream) {
     bytes_ += len;
     ++lines_;
   }
-  std::free(buf);
-  std::fclose(in);
-  if (left != 0) throw std::runtime_error("cannot read " + stream.path());
-  spliced(stream);
+  if (s.left != 0) throw std::runtime_error("cannot read " + s.stream->path());
+  return nullptr;
 }
 
-// Format 3: the records are copied as they are (ids are implied), each deferred subtree
-// spliced at its mark; the trailer gives the records and leaves they count.
-void CertificateWriter::splice_binary(TreeRecordFile& stream) {
-  stream.close();
-  long all = 0;
-  FILE* in = open_records(stream, &all);
-  unsigned char trailer[16];
-  const long size = all - 16;
-  if (size < 0 || std::fseek(in, stream.begin() + size, SEEK_SET) != 0 ||
-      std::fread(trailer, 1, 16, in) != 16 || std::fseek(in, stream.begin(), SEEK_SET) != 0)
-    throw std::runtime_error("cannot read " + stream.path());
-  uint64_t count[2] = {0, 0};
-  for (int i = 0; i < 16; ++i) count[i / 8] |= uint64_t(trailer[i]) << (8 * (i % 8));
-  std::vector<char> buf(1 << 20);
-  long at = 0;
-  const auto copy_to = [&](long end) {
-    while (at < end) {
-      const size_t want = size_t(std::min<long>(end - at, long(buf.size())));
-      const size_t k = std::fread(buf.data(), 1, want, in);
-      if (k == 0) throw std::runtime_error("cannot read " + stream.path());
-      std::fwrite(buf.data(), 1, k, f_);
-      at += long(k);
-    }
-  };
-  for (const TreeRecordFile::Mark& m : stream.marks()) {
-    copy_to(m.offset);
-    splice(task_records(m.task));
+void CertificateWriter::end_splicing(Splicing& s) {
+  s.in.reset();
+  if (s.stream->binary()) {
+    bytes_ += s.left;
+    lines_ += long(s.count[0]);
+    leaves_ += long(s.count[1]);
   }
-  copy_to(size);
-  std::fclose(in);
-  bytes_ += size;
-  lines_ += long(count[0]);
-  leaves_ += long(count[1]);
-  spliced(stream);
+  spliced(*s.stream);
 }
 
 std::unique_ptr<CompactTree> compact_tree(const Box& root, const Model& model, int factors) {

@@ -118,12 +118,15 @@ class CertificateWriter : public CertificateSink {
   void real(double x);
   void interval(const Interval& x);
   void end_line();
-  void splice(TreeRecordFile& stream);
+  struct Splicing;
+  void splice(TreeRecordFile& top);
+  Splicing open_splicing(TreeRecordFile& stream);
+  TreeRecordFile* copy_until_subtree(Splicing& s);
+  void end_splicing(Splicing& s);
   TreeRecordFile& task_records(int32_t task);  // fetched first if held elsewhere
   bool held(int32_t task) const {  // restore_later's, not yet fetched
     return task >= 0 && size_t(task) < held_.size() && held_[task];
   }
-  void splice_binary(TreeRecordFile& stream);
   FILE* open_records(TreeRecordFile& stream, long* size);  // at its first byte
   void spliced(TreeRecordFile& stream);  // frees its disk space or memory
   void binary(const std::string& record);  // one format 3 record
@@ -151,6 +154,9 @@ class CertificateWriter : public CertificateSink {
   int format_ = 2;
   const Model& model_;
   std::string record_;  // scratch: one binary record
+  std::vector<char> copy_buffer_;  // scratch of splice: format 3's records
+  char* line_ = nullptr;  // scratch of splice (getline's): one format 2 record
+  size_t line_size_ = 0;
 };
 
 }  // namespace aspects

@@ -9,6 +9,7 @@ outputs (never hard-coded results), so that it fails when the behaviour breaks.
 import csv
 import json
 import os
+import re
 import resource
 import signal
 import subprocess
@@ -421,6 +422,31 @@ def case_sigkill():
         run(["solve", "--resume", d, "--quiet", "--threads", "2"], 0)
         same_outputs(ref, d, "killed and resumed (seed %d, attempt %d)" % (seed, attempt))
         no_half_written(ref, d, "killed and resumed")  # the killed run's temporaries removed
+
+
+def case_deep_tree():
+    # Issue 50: eps 1e-300 on a domain 1e300 wide, stopped by its time limit. The search
+    # once cut cells one ulp wide at an end, without end (a tree over 50,000 levels deep by
+    # the stop), and the merge's recursion then crashed (SIGSEGV), leaving the
+    # certificate's temporaries behind. The stopped run gives its partial result (exit 3)
+    # and leaves no temporary file.
+    model = os.path.join(WORK, "deep.robot")
+    with open(model, "w") as f:
+        f.write("robot Deep\npose x in [-1e300, 1e300]\ncommand q in [-1e300, 1e300]\n"
+                "equation x - q^3 = 0\n")
+    d = fresh("deep_tree")
+    p = run(["solve", model, "--eps", "1e-300", "--threads", "1", "--time-limit", "5", "--out", d], 3)
+    if "stopped by time-limit: partial result" not in p.stderr or " unexplored)" not in p.stdout:
+        fail("no partial result: %r %r" % (p.stdout, p.stderr))
+    check_partial(d, "time-limit", verify=False)  # summary, boxes.csv, no temporary file
+    # check_cert rejects this certificate, complete or partial (a run at eps 1e299 gets the
+    # same verdict): the solver proves det Fx = 1 > 0 on boxes where q^3 passes 1e308, in
+    # MPFR's exponent range, and check_cert, in doubles, cannot evaluate the Jacobians
+    # there. A claim the checker cannot check, not a false one; see issue 50's report.
+    p = subprocess.run([CHECK, os.path.join(d, "aspects.cert")], capture_output=True, text=True)
+    if p.returncode != 1 or not re.fullmatch(
+            r"check_cert: REJECTED record [0-9]+: factor 1 is not defined on the box\n", p.stdout):
+        fail("check_cert exit %d: %r %r" % (p.returncode, p.stdout, p.stderr))
 
 
 CASES = {k[5:]: v for k, v in globals().items() if k.startswith("case_")}

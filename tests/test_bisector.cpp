@@ -5,6 +5,7 @@
 // then split), or return `box[v].lo_down()` as the split point.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "search/bisector.h"
@@ -62,6 +63,42 @@ TEST(Bisector, KeepsTheMeaningOfEpsAndSplitsInside) {
       ASSERT_GT(c.at, b[c.var].lo_down());
       ASSERT_LT(c.at, b[c.var].hi_up());
     }
+  }
+}
+
+// Issue 50: with eps below the doubles' spacing (eps 1e-300, a cell near 1), a variable
+// one ulp wide is still wider than eps, but no double lies strictly inside it. Cut at its
+// middle rounded to an end, the box had a child equal to itself, again and again: a tree
+// tens of thousands of levels deep, and a certificate check_cert rejected ("bisection point
+// not strictly inside the cell"). Such a variable is never cut; a box of nothing else is a
+// leaf.
+TEST(Bisector, AVariableWithNoDoubleInsideIsNotCut) {
+  set_working_precision(53);
+  Model m = parse_model(kModel, "t.robot");
+  const double eps = 1e-300, one_up = std::nextafter(1.0, 2.0);
+  const double two_up = std::nextafter(one_up, 2.0);
+  EXPECT_FALSE(splittable(Interval(1.0, one_up), eps));
+  EXPECT_TRUE(splittable(Interval(1.0, two_up), eps));  // one_up is inside
+  EXPECT_FALSE(splittable(Interval(1.0, two_up), 1.0));  // at most eps wide
+  for (BisectorKind kind : kAll) {
+    auto bis = make_bisector(kind, m, eps);
+    // x (pose) and b (command) one ulp wide, a and y wide: a or y is cut, inside.
+    const Box some = make_box({{1, one_up}, {0, 8}, {0, 8}, {1, one_up}});
+    for (int parent = -1; parent < 4; ++parent)
+      for (Verdict verdict : {Verdict::NoExistence, Verdict::SingularFx}) {
+        const SplitChoice c = bis->choose(some, {parent, verdict});
+        ASSERT_TRUE(c.var == 1 || c.var == 2) << "cut " << c.var << " after " << parent;
+        EXPECT_EQ(c.at, 4.0);
+      }
+    // Every variable one ulp wide: a leaf.
+    const Box none = make_box({{1, one_up}, {-one_up, -1}, {0x1p-40, std::nextafter(0x1p-40, 1.0)},
+                               {1, one_up}});
+    EXPECT_EQ(bis->choose(none, {0, Verdict::SingularFx}).var, -1);
+    // Three doubles: the middle one is the cut.
+    const SplitChoice c = bis->choose(make_box({{1, two_up}, {1, one_up}, {1, one_up}, {1, one_up}}),
+                                      {-1, Verdict::NoExistence});
+    EXPECT_EQ(c.var, 0);
+    EXPECT_EQ(c.at, one_up);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <thread>
 #include <utility>
 
+#include "deep_tree.h"
 #include "generalized_aspects.h"
 
 using namespace aspects;
@@ -155,4 +156,22 @@ TEST(NeighborhoodGraph, StreamedMGivesTheWholeMsResults) {
   EXPECT_EQ(r.separation.lower_bound, whole.lower_bound);
   EXPECT_EQ(r.separation.per_class, whole.per_class);
   EXPECT_EQ(r.separation.representatives, whole.representatives);
+}
+
+// Issue 50: a run stopped far down leaves a tree deeper than a thread's stack. The hulls
+// and the queries walk it with their own stacks (they recursed once a level: SIGSEGV).
+// Ten boxes, consecutive ones touching: M is the nine pairs (b, b + 1). The top three nodes
+// hold hulls (at least 8 boxes below them); the chain below, with fewer, is walked whole by
+// every query.
+TEST(NeighborhoodGraph, ATreeDeeperThanTheStackIsWalked) {
+  set_working_precision(53);
+  const DeepTree d = deep_tree(kDeepTreeLevels, LeafFate::Unexplored, 2, 1, 8);
+  ASSERT_EQ(d.boxes.size(), 10);
+  const std::vector<NeighborPair> M = neighbor_pairs(d.tree, d.boxes.ends(), {false, false});
+  ASSERT_EQ(M.size(), 9u);
+  for (int32_t b = 0; b < 9; ++b) {
+    EXPECT_EQ(M[size_t(b)].a, b);
+    EXPECT_EQ(M[size_t(b)].b, b + 1);
+    EXPECT_EQ(M[size_t(b)].shift_code, pack_shift({0, 0}));
+  }
 }

@@ -3,12 +3,17 @@
 // come back field for field, and damaged bytes are refused, never read as another part.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
+#include "deep_tree.h"
 #include "generalized_aspects.h"
 #include "model/determinant_factors.h"
 #include "mpi_message.h"
+#include "pipeline/part_merger.h"
 #include "search/stop_condition.h"
 #include "search_part_codec.h"
 
@@ -170,6 +175,79 @@ TEST(SearchPartCodec, ATreeNotInTheSearchsOrderIsNotWritten) {
   ASSERT_GE(second, 0);
   std::swap(part.tree[size_t(first)].index, part.tree[size_t(second)].index);
   EXPECT_THROW(encode(part, s.p), std::logic_error);
+}
+
+SearchPart part_of(DeepTree d) {
+  SearchPart part;
+  part.tree = std::move(d.tree);
+  part.boxes = std::move(d.boxes);
+  return part;
+}
+
+// Issue 50: a run stopped far down the tree. The coder and the decoder keep their own
+// stacks, so a part 200,000 levels deep (tests/deep_tree.h) comes back whole.
+TEST(SearchPartCodec, APartDeeperThanTheStackComesBack) {
+  set_working_precision(53);
+  const SearchPart part = part_of(deep_tree(kDeepTreeLevels, LeafFate::Unexplored, 2, 2, 3));
+  ASSERT_EQ(part.tree.size(), 2 * size_t(kDeepTreeLevels) + 1);
+  ASSERT_EQ(part.boxes.size(), 5);
+  expect_same(part, decode(encode(part, 2), 2, 2, 0));
+}
+
+// The depth of the merged tree's deepest leaf (an explicit stack: the tree is deep).
+size_t depth_of(const std::vector<SearchNode>& tree) {
+  size_t deepest = 0;
+  std::vector<std::pair<int32_t, size_t>> stack{{0, 0}};
+  while (!stack.empty()) {
+    const auto [i, depth] = stack.back();
+    stack.pop_back();
+    deepest = std::max(deepest, depth);
+    if (!tree[size_t(i)].internal()) continue;
+    stack.push_back({tree[size_t(i)].right(), depth + 1});
+    stack.push_back({tree[size_t(i)].left(), depth + 1});
+  }
+  return deepest;
+}
+
+// The merge grafts a deep subtree, come back encoded as from another rank, below a deep
+// top's deferred leaf: one tree twice as deep, in the search's order, its boxes depth first
+// (the subtree's, then the top's). Before issue 50 the graft recursed once a level and
+// overflowed the stack (SIGSEGV).
+TEST(SearchPartCodec, TheMergeGraftsPartsDeeperThanTheStack) {
+  set_working_precision(53);
+  const int levels = kDeepTreeLevels / 2;
+  SearchPart top = part_of(deep_tree(levels, LeafFate::Deferred, 2, 2, 2));
+  const SearchPart sub = part_of(deep_tree(levels, LeafFate::Unexplored, 2, 2));
+  ASSERT_EQ(top.boxes.size(), 3);
+  ASSERT_EQ(sub.boxes.size(), 2);
+  const size_t nodes = top.tree.size() - 1 + sub.tree.size();
+  std::vector<SearchPart> parts(1);
+  std::vector<EncodedPart> encoded(1);
+  encoded[0] = {encode(sub, 2), long(sub.tree.size()), long(sub.boxes.size())};
+  SearchPart merged;
+  merged.boxes = OutputBoxes(2, 2);
+  int decoded = 0;
+  PartMerger(parts, merged.boxes, merged.tree)
+      .merge(top, &encoded, [&](int32_t k, const std::string& bytes, SearchPart& part) {
+        EXPECT_EQ(k, 0);
+        part = decode(bytes, 2, 2, 0);
+        ++decoded;
+      });
+  EXPECT_EQ(decoded, 1);
+  ASSERT_EQ(merged.tree.size(), nodes);
+  EXPECT_EQ(depth_of(merged.tree), 2 * size_t(levels));
+  // Boxes in depth-first order: the subtree's two (x from 0 and 1, the first unexplored),
+  // then the top's three.
+  ASSERT_EQ(merged.boxes.size(), 5);
+  const double x_lo[] = {0, 1, 0, 1, 2};
+  for (int b = 0; b < 5; ++b) EXPECT_EQ(merged.boxes.lo(b, 0), x_lo[b]) << "box " << b;
+  EXPECT_TRUE(merged.boxes.unexplored(0));
+  EXPECT_FALSE(merged.boxes.unexplored(2));
+  // The graft numbered the merged tree as a search would have: the coder accepts it.
+  EXPECT_NO_THROW(encode(merged, 2));
+  EXPECT_TRUE(top.tree.empty());  // each part freed once grafted
+  EXPECT_TRUE(parts[0].tree.empty());
+  EXPECT_TRUE(encoded[0].bytes.empty());
 }
 
 }  // namespace

@@ -54,37 +54,44 @@ struct Hulls {
     h.resize(size_t(hulls) * 2 * nv);
     for (size_t k = 0; k < h.size(); k += 2) h[k] = INFINITY, h[k + 1] = -INFINITY;
     last.assign(size_t(hulls), -1);
+    std::vector<int32_t> stack;  // unite's
     for (size_t i = tree.size(); i-- > 0;)
       if (slot[i] >= 0) {
         float* hull = &h[size_t(slot[i]) * 2 * nv];
-        unite(tree[i].left(), hull, last[slot[i]]);
-        unite(tree[i].right(), hull, last[slot[i]]);
+        unite(tree[i].left(), hull, last[slot[i]], stack);
+        unite(tree[i].right(), hull, last[slot[i]], stack);
       }
   }
 
   // hull ∪= the output boxes below `node` (whose hull, if it has one, is already made), and
-  // last_id := max(last_id, their largest id).
-  void unite(int32_t node, float* hull, int32_t& last_id) const {
-    const SearchNode& s = tree[node];
+  // last_id := max(last_id, their largest id). Iterative, on `stack` (the union takes any
+  // order): a stopped search leaves trees tens of thousands of levels deep.
+  void unite(int32_t node, float* hull, int32_t& last_id, std::vector<int32_t>& stack) const {
     const int nv = R.nv();
-    if (s.internal() && slot[node] < 0) {
-      unite(s.left(), hull, last_id);
-      unite(s.right(), hull, last_id);
-      return;
-    }
-    if (!s.internal() && s.leaf() < 0) return;
-    last_id = std::max(last_id, s.internal() ? last[slot[node]] : s.leaf());
-    for (int v = 0; v < nv; ++v) {
-      float lo, hi;
-      if (s.internal()) {
-        lo = h[(size_t(slot[node]) * nv + v) * 2];
-        hi = h[(size_t(slot[node]) * nv + v) * 2 + 1];
-      } else {
-        lo = down(R.lo(s.leaf(), v));
-        hi = up(R.hi(s.leaf(), v));
+    stack.assign(1, node);
+    while (!stack.empty()) {
+      const int32_t i = stack.back();
+      stack.pop_back();
+      const SearchNode& s = tree[i];
+      if (s.internal() && slot[i] < 0) {
+        stack.push_back(s.right());
+        stack.push_back(s.left());
+        continue;
       }
-      hull[2 * v] = std::min(hull[2 * v], lo);
-      hull[2 * v + 1] = std::max(hull[2 * v + 1], hi);
+      if (!s.internal() && s.leaf() < 0) continue;
+      last_id = std::max(last_id, s.internal() ? last[slot[i]] : s.leaf());
+      for (int v = 0; v < nv; ++v) {
+        float lo, hi;
+        if (s.internal()) {
+          lo = h[(size_t(slot[i]) * nv + v) * 2];
+          hi = h[(size_t(slot[i]) * nv + v) * 2 + 1];
+        } else {
+          lo = down(R.lo(s.leaf(), v));
+          hi = up(R.hi(s.leaf(), v));
+        }
+        hull[2 * v] = std::min(hull[2 * v], lo);
+        hull[2 * v + 1] = std::max(hull[2 * v + 1], hi);
+      }
     }
   }
 };
@@ -120,25 +127,39 @@ struct Query {
   Interval t;
   std::vector<NeighborPair>* out;
 
+  std::vector<int32_t> stack;  // visit's, kept from one query to the next
+
+  // The pairs (self, b) below `node`, depth first, left before right. An explicit stack:
+  // a stopped search leaves trees tens of thousands of levels deep.
   void visit(int32_t node) {
-    const SearchNode& s = tree[node];
     const int nv = R.nv();
-    if (!s.internal()) {
-      const int32_t b = s.leaf();
-      if (b < 0 || b <= self) return;
-      for (int v = 0; v < nv; ++v)
-        if (lo[v] > R.hi(b, v) || R.lo(b, v) > hi[v]) return;
-      if (meets_shifted(R, self, b, back, two_pi, t)) out->push_back({self, b, pack_shift(back)});
-      return;
+    stack.assign(1, node);
+    while (!stack.empty()) {
+      const int32_t i = stack.back();
+      stack.pop_back();
+      const SearchNode& s = tree[i];
+      if (!s.internal()) {
+        const int32_t b = s.leaf();
+        if (b < 0 || b <= self || !meets_query(b)) continue;
+        if (meets_shifted(R, self, b, back, two_pi, t)) out->push_back({self, b, pack_shift(back)});
+        continue;
+      }
+      if (hulls.slot[i] >= 0) {
+        if (hulls.last[hulls.slot[i]] <= self) continue;
+        const float* h = &hulls.h[size_t(hulls.slot[i]) * 2 * nv];
+        bool meets = true;
+        for (int v = 0; v < nv && meets; ++v) meets = !(lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]);
+        if (!meets) continue;
+      }
+      stack.push_back(s.right());
+      stack.push_back(s.left());
     }
-    if (hulls.slot[node] >= 0) {
-      if (hulls.last[hulls.slot[node]] <= self) return;
-      const float* h = &hulls.h[size_t(hulls.slot[node]) * 2 * nv];
-      for (int v = 0; v < nv; ++v)
-        if (lo[v] > h[2 * v + 1] || h[2 * v] > hi[v]) return;
-    }
-    visit(s.left());
-    visit(s.right());
+  }
+
+  bool meets_query(int32_t b) const {
+    for (int v = 0; v < R.nv(); ++v)
+      if (lo[v] > R.hi(b, v) || R.lo(b, v) > hi[v]) return false;
+    return true;
   }
 };
 
@@ -170,7 +191,7 @@ bool stream_neighbor_pairs(const std::vector<SearchNode>& tree, const BoxStore& 
     // precision may differ, and M must not depend on the thread).
     Interval two_pi = two_pi_shared, t = two_pi_shared;
     Query q{tree, R, hulls, std::vector<double>(nv), std::vector<double>(nv), 0,
-            std::vector<int>(nv, 0), two_pi, two_pi_shared, &out};
+            std::vector<int>(nv, 0), two_pi, two_pi_shared, &out, {}};
     std::vector<int> k(nv, 0);
     const int end = std::min(R.size(), (blk + 1) * block);
     for (int id = blk * block; id < end; ++id) {

@@ -2,34 +2,40 @@
 
 namespace aspects {
 
+bool splittable(const Interval& x, double eps) {
+  if (!(x.width_up() > eps)) return false;
+  const double at = x.mid();
+  return x.lo_down() < at && at < x.hi_up();
+}
+
 SplitChoice Bisector::choose(const Box& box, const SplitContext& ctx) const {
   SplitChoice c;
   bool wide = false;
-  for (const auto& x : box) wide = wide || x.width_up() > eps_;
+  for (const auto& x : box) wide = wide || splittable(x, eps_);
   if (!wide) return c;
   c.var = variable(box, ctx);
-  c.at = box[c.var].mid();  // a double strictly inside: both halves are non-empty
+  c.at = box[c.var].mid();  // a double strictly inside (splittable): both halves are smaller
   return c;
 }
 
 namespace {
 
-// Round robin over the variables wider than eps, starting after the parent's split.
+// Round robin over the variables to split, starting after the parent's split.
 int round_robin(const Box& box, int parent_split, double eps) {
   const int nv = int(box.size());
   for (int s = 1; s <= nv; ++s) {
     int v = parent_split < 0 ? s - 1 : (parent_split + s) % nv;
-    if (box[v].width_up() > eps) return v;
+    if (splittable(box[v], eps)) return v;
   }
   return -1;
 }
 
-// The widest of `vars` wider than eps, or -1.
+// The widest of `vars` to split, or -1.
 int widest_of(const Box& box, const std::vector<int>& vars, double eps) {
   int best = -1;
   double widest = eps;
   for (int v : vars)
-    if (box[v].width_up() > widest) {
+    if (box[v].width_up() > widest && splittable(box[v], eps)) {
       widest = box[v].width_up();
       best = v;
     }

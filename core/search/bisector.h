@@ -1,7 +1,12 @@
 // Branch of Algorithm 1: which variable of a box to bisect, and where. A bisector is a
 // policy, chosen per run; the search loop only asks it. Every bisector here keeps the
 // paper's meaning of eps: a box is bisected while its widest variable is wider than eps
-// (and only then); which variable is cut is the bisector's choice.
+// (and only then); which variable is cut is the bisector's choice. One exception: a
+// variable with no double strictly inside it (eps below the doubles' spacing there, as with
+// eps 1e-300 on a cell near 1) cannot be cut, and a box with no other variable to cut is a
+// leaf (an undecided box wider than eps, which check_cert counts as `wide_undecided`). A
+// cut at one of its ends would make a child equal to its parent, again and again, without
+// end.
 #pragma once
 
 #include <memory>
@@ -14,8 +19,11 @@
 
 namespace aspects {
 
+// A variable the search may cut: wider than eps, with a double strictly inside it.
+bool splittable(const Interval& x, double eps);
+
 struct SplitChoice {
-  int var = -1;     // -1: every variable is at most eps wide; the box is a leaf
+  int var = -1;     // -1: no variable is splittable(); the box is a leaf
   double at = 0;    // exact split point, strictly inside the variable's interval
 };
 

@@ -23,31 +23,50 @@ void PartMerger::merge(SearchPart& top, std::vector<EncodedPart>* encoded,
   release(top);
 }
 
-// Node i of `part` and the tree below it into tree_[id]; the children of an internal node
-// take two adjacent new slots, as in the search.
-void PartMerger::graft(SearchPart& part, int32_t i, int32_t id) {
-  const SearchNode src = part.tree[i];
-  if (src.fate == LeafFate::Deferred && !src.internal()) {
-    SearchPart& sub = parts_[src.index];
-    if (EncodedPart* e = still_encoded(size_t(src.index))) {
-      decode_(src.index, e->bytes, sub);
-      std::string().swap(e->bytes);
+// The tree below node i of `part` into tree_[id], depth first, left before right; the
+// children of an internal node take two adjacent new slots, as in the search. An explicit
+// stack, not recursion: a search stopped deep down (eps far below the domain's width)
+// leaves trees tens of thousands of levels deep, more than a thread's stack holds.
+void PartMerger::graft(SearchPart& root, int32_t i, int32_t id) {
+  struct Item {
+    SearchPart* part;
+    int32_t i;   // the node to graft; kRelease: free `part`, grafted whole
+    int32_t id;  // its slot in tree_
+  };
+  constexpr int32_t kRelease = -1;
+  std::vector<Item> stack{{&root, i, id}};
+  while (!stack.empty()) {
+    const Item it = stack.back();
+    stack.pop_back();
+    SearchPart& part = *it.part;
+    if (it.i == kRelease) {
+      release(part);  // each part is grafted once, whole
+      continue;
     }
-    graft(sub, 0, id);
-    release(sub);  // each part is grafted once, whole
-    return;
-  }
-  tree_[id] = src;
-  if (src.internal()) {
-    const int32_t first = int32_t(tree_.size());
-    tree_.emplace_back();
-    tree_.emplace_back();
-    tree_[id].index = first;
-    graft(part, src.left(), first);
-    graft(part, src.right(), first + 1);
-  } else if (src.index >= 0) {
-    if (src.index != part.next_leaf++) throw std::logic_error("merge: leaves out of order");
-    tree_[id].index = boxes_.push_copy(part.boxes, src.index);
+    if (size_t(it.i) >= part.tree.size()) throw std::logic_error("merge: a node outside its part");
+    const SearchNode src = part.tree[size_t(it.i)];
+    if (src.fate == LeafFate::Deferred && !src.internal()) {
+      SearchPart& sub = parts_[size_t(src.index)];
+      if (EncodedPart* e = still_encoded(size_t(src.index))) {
+        decode_(src.index, e->bytes, sub);
+        std::string().swap(e->bytes);
+      }
+      stack.push_back({&sub, kRelease, 0});
+      stack.push_back({&sub, 0, it.id});
+      continue;
+    }
+    tree_[size_t(it.id)] = src;
+    if (src.internal()) {
+      const int32_t first = int32_t(tree_.size());
+      tree_.emplace_back();
+      tree_.emplace_back();
+      tree_[size_t(it.id)].index = first;
+      stack.push_back({&part, src.right(), first + 1});  // the left child comes out first
+      stack.push_back({&part, src.left(), first});
+    } else if (src.index >= 0) {
+      if (src.index != part.next_leaf++) throw std::logic_error("merge: leaves out of order");
+      tree_[size_t(it.id)].index = boxes_.push_copy(part.boxes, src.index);
+    }
   }
 }
 
