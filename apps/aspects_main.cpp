@@ -126,7 +126,11 @@ void add_path(CLI::App& app, Commands& c) {
   path->add_option("--to", po.to, "goal pose, comma-separated in pose order")->required();
   // -1, the default's value inside, is refused when given: it would mean "any CSNC".
   path->add_option("--csnc", po.csnc, "stay in this CSNC (default: the largest holding both)")
-      ->check(CLI::NonNegativeNumber);
+      ->check([](const std::string& v) {
+        return v.empty() || v[0] != '-' ? std::string()
+                                        : "CSNCs are numbered from 0 (leave --csnc out for any "
+                                          "CSNC), got " + v;
+      });
   path->add_flag("--json", po.json, "print one JSON object");
   path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
 }
