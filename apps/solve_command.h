@@ -69,7 +69,7 @@ struct SharedSearch {
   std::unique_ptr<Checkpoint> resumed;
   int later_threads = 0;  // threads of the phases after the search (0: --threads)
   // The output directory's lock, taken before its checkpoint was read (null: none).
-  std::unique_ptr<DirectoryLock> lock;
+  std::unique_ptr<DirectoryLock> lock = nullptr;
 };
 
 int run_solve(const SolveOptions& opts, SharedSearch* shared = nullptr);
