@@ -4,10 +4,10 @@
 // - the index and the summary: hash and count matches. Each records the certificate's
 //   sha256(cert) as check_cert computes it and the model's hash; the summary records the
 //   index's sha256 (the index checks its own checksum); their counts (solution boxes,
-//   undecided boxes, links, CSNCs, eps; the summary's bound and completeness) are the
-//   certificate's. The index's boxes, signs and witnesses are not compared with the
-//   certificate's records one by one: a file rewritten with its hashes recomputed would
-//   pass (the hashes are no signature).
+//   undecided boxes, links, CSNCs, eps; the summary's bound) are the certificate's, and
+//   the summary says complete only if the certificate's tree is. The index's boxes, signs
+//   and witnesses are not compared with the certificate's records one by one: a file
+//   rewritten with its hashes recomputed would pass (the hashes are no signature).
 #pragma once
 
 #include <string>
