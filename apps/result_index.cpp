@@ -1,7 +1,6 @@
 #include "result_index.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -35,8 +34,8 @@ const char kTrailer[] = "end-index\n";
 constexpr size_t kChecksumBytes = 32;
 
 // The index's bytes, into a string, or through a file in pieces of about a megabyte
-// (on 3-RPR at eps 0.3 the whole index is over a gigabyte).
-// Every byte is hashed, for the checksum that ends the index.
+// (on 3-RPR at eps 0.3 the whole index is over a gigabyte); every byte hashed, for the
+// checksum that ends the index.
 class Writer : public LeWriter {
  public:
   explicit Writer(AtomicFile* file = nullptr) : file_(file) {}
@@ -76,8 +75,9 @@ class Writer : public LeWriter {
 };
 
 bool is_sha256_hex(const std::string& s) {
-  return s.size() == 64 &&
-         std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(c) || (c >= 'a' && c <= 'f'); });
+  return s.size() == 64 && std::all_of(s.begin(), s.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
 }
 
 class Reader : public LeReader {

@@ -194,13 +194,15 @@ void print_text(const std::string& cert_name, const json& cc, const std::vector<
                   "it by hashes and counts (their boxes, signs and witnesses are not compared "
                   "with the certificate's records)\n",
                   outcome_name(outcome),
-                  outcome == VerifyOutcome::Verified ? "verified"
-                                                     : "verified all but the bound (a user factor) of");
+                  outcome == VerifyOutcome::Verified
+                      ? "verified"
+                      : "verified all but the bound (a user factor) of");
       break;
     case VerifyOutcome::NotVerified:
-      std::printf("NOT VERIFIED: %s\n", verdict == "VERIFIED" || verdict == "UNCHECKED"
-                                            ? "a file of the directory does not match the certificate"
-                                            : "check_cert did not accept the certificate");
+      std::printf("NOT VERIFIED: %s\n",
+                  verdict == "VERIFIED" || verdict == "UNCHECKED"
+                      ? "a file of the directory does not match the certificate"
+                      : "check_cert did not accept the certificate");
       break;
   }
 }

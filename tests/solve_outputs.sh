@@ -145,6 +145,13 @@ rm "$out/aspects.cert.zst"
 sed 's/"separated_lower_bound": 4/"separated_lower_bound": 5/' "$out/summary.json" > "$out/s" &&
   mv "$out/s" "$out/summary.json"
 expect 1 "^  separated_lower_bound 5, the certificate's 4$" "$aspects" verify "$out"
+# A certificate check_cert rejects: verify says so, exit 1.
+"$aspects" solve "$model" --eps 0.1 --quiet --out "$out"
+sed 's/^claim lower-bound 4$/claim lower-bound 5/' "$out/aspects.cert" > "$out/c" &&
+  mv "$out/c" "$out/aspects.cert"
+expect 1 "^aspects.cert      check_cert REJECTED: claimed lower bound 5 exceeds the recomputed 4$" \
+  "$aspects" verify "$out"
+grep -q "^NOT VERIFIED: check_cert did not accept the certificate$" "$out/log" || fail "verify: rejected"
 # The first solution box's signs flipped in the index (issue 50, item 5: query printed
 # them as certified): its checksum refuses it. Layout: apps/result_index.cpp.
 "$aspects" solve "$model" --eps 0.1 --quiet --out "$out"
