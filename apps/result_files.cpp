@@ -88,7 +88,9 @@ std::vector<std::string> mismatched_files(const std::string& dir, const ResultIn
       continue;
     }
     const std::string cert_model = certificate_model_sha256(path);
-    if (cert_model != model_sha)
+    if (cert_model.empty())
+      bad.push_back(path + ": no model line could be read (unreadable, or not a certificate)");
+    else if (cert_model != model_sha)
       bad.push_back(path + ": its model (sha256 " + short_hash(cert_model) +
                     ") is not the result's (sha256 " + short_hash(model_sha) + ", the model in " +
                     kResultIndexName + "): a certificate of another run (solve again)");

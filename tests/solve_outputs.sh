@@ -140,6 +140,12 @@ cp "$stopped/aspects.cert.zst" "$out/"
 expect 2 "/aspects.cert.zst: a certificate of another run: aspects.idx records aspects.cert \(remove it, or solve again\)" \
   "$aspects" path "$out" --from 1 --to 2
 rm "$out/aspects.cert.zst"
+# A file under the certificate's name that is none.
+mv "$out/aspects.cert" "$out/saved.cert"
+echo "not a certificate" > "$out/aspects.cert"
+expect 2 "/aspects.cert: no model line could be read \(unreadable, or not a certificate\)$" \
+  "$aspects" query "$out" --pose 1
+mv "$out/saved.cert" "$out/aspects.cert"
 # The summary's bound edited: verify compares it with the certificate's.
 "$aspects" solve "$model" --eps 0.1 --quiet --out "$out"
 sed 's/"separated_lower_bound": 4/"separated_lower_bound": 5/' "$out/summary.json" > "$out/s" &&
