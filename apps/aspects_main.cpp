@@ -17,6 +17,7 @@
 #include "query_command.h"
 #include "result_index.h"
 #include "solve_command.h"
+#include "verify_command.h"
 #if ASPECTS_MPI
 #include "mpi_solve.h"
 #endif
@@ -33,12 +34,14 @@ struct Commands {
   CLI::App* path = nullptr;
   CLI::App* plot = nullptr;
   CLI::App* count = nullptr;
+  CLI::App* verify = nullptr;
   std::string info_model;
   SolveOptions solve_options;
   QueryOptions query_options;
   PathOptions path_options;
   PlotOptions plot_options;
   CountOptions count_options;
+  VerifyOptions verify_options;
 };
 
 void add_info(CLI::App& app, Commands& c) {
@@ -124,7 +127,13 @@ void add_path(CLI::App& app, Commands& c) {
       ->required();
   path->add_option("--from", po.from, "start pose, comma-separated in pose order")->required();
   path->add_option("--to", po.to, "goal pose, comma-separated in pose order")->required();
-  path->add_option("--csnc", po.csnc, "stay in this CSNC (default: the largest holding both)");
+  // -1, the default's value inside, is refused when given: it would mean "any CSNC".
+  path->add_option("--csnc", po.csnc, "stay in this CSNC (default: the largest holding both)")
+      ->check([](const std::string& v) {
+        return v.empty() || v[0] != '-' ? std::string()
+                                        : "CSNCs are numbered from 0 (leave --csnc out for any "
+                                          "CSNC), got " + v;
+      });
   path->add_flag("--json", po.json, "print one JSON object");
   path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
 }
@@ -157,6 +166,19 @@ void add_count(CLI::App& app, Commands& c) {
   count->add_flag("--progress", co.progress, "progress on stderr even when it is not a terminal");
 }
 
+void add_verify(CLI::App& app, Commands& c) {
+  VerifyOptions& vo = c.verify_options;
+  auto* verify = c.verify = app.add_subcommand(
+      "verify", "Run check_cert on a result's certificate, and check that its index and "
+                "summary are of the same run (hashes and counts)");
+  verify->add_option("RESULT_DIR", vo.result_dir, "directory written by `aspects solve --out`")
+      ->required();
+  verify->add_option("--threads", vo.threads, "check_cert's threads (0: its default)")
+      ->check(CLI::NonNegativeNumber)
+      ->default_val(0);
+  verify->add_flag("--json", vo.json, "print one JSON object");
+}
+
 // The options of `solve` given on the command line: a resumed run refuses those that
 // differ from its checkpoint, and the model's `bisect` statement yields to --bisect.
 void record_given_options(Commands& c) {
@@ -176,6 +198,7 @@ int run_command(Commands& c) {
   if (*c.path) return run_path(c.path_options);
   if (*c.plot) return run_plot(c.plot_options);
   if (*c.count) return run_count(c.count_options);
+  if (*c.verify) return run_verify(c.verify_options);
   return run_solve(c.solve_options);
 }
 
@@ -249,6 +272,7 @@ int main(int argc, char** argv) {
   add_path(app, commands);
   add_plot(app, commands);
   add_count(app, commands);
+  add_verify(app, commands);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

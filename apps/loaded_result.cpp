@@ -1,5 +1,7 @@
 #include "loaded_result.h"
 
+#include "result_files.h"
+
 namespace aspects {
 
 LoadedResult load_result_from(ResultIndex index, const std::string& what) {
@@ -18,7 +20,16 @@ LoadedResult load_result_from(ResultIndex index, const std::string& what) {
 }
 
 LoadedResult load_result(const std::string& result_dir) {
-  return load_result_from(read_result_index(result_dir), result_dir);
+  ResultIndex idx = read_result_index(result_dir);
+  const std::vector<std::string> bad = mismatched_files(result_dir, idx);
+  if (!bad.empty()) throw IndexError(bad.front());
+  return load_result_from(std::move(idx), result_dir);
+}
+
+std::string certificate_note(const LoadedResult& r) {
+  if (!r.index.certificate_file.empty()) return "";
+  return "this result has no certificate (solved with --no-cert): its solution boxes, links, "
+         "CSNCs and signs are the solver's, not checked by check_cert";
 }
 
 }  // namespace aspects

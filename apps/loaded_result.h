@@ -19,8 +19,14 @@ struct LoadedResult {
 };
 
 // Reads DIR/aspects.idx and parses its model. Sets the working precision to the
-// recorded one, so call it before creating any interval. Throws IndexError.
+// recorded one, so call it before creating any interval. Throws IndexError, also when a
+// certificate or summary.json in DIR is not of the run that wrote the index
+// (result_files.h: a stale or mixed directory).
 LoadedResult load_result(const std::string& result_dir);
+
+// What a reader of the result should know of its certificate: empty when the index
+// records one; else that nothing of the result was checked by check_cert.
+std::string certificate_note(const LoadedResult& r);
 
 // Builds the same from an index already in memory (tests); throws IndexError.
 LoadedResult load_result_from(ResultIndex index, const std::string& what);

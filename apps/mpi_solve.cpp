@@ -14,6 +14,7 @@
 #include "mpi_resume.h"
 #include "mpi_subtrees.h"
 #include "solve_config.h"
+#include "solve_outputs.h"
 #include "solve_resume.h"
 
 namespace aspects {
@@ -68,6 +69,7 @@ std::string what_of(const std::exception_ptr& e) {
 struct PreparedRun {
   std::optional<Model> model;
   std::unique_ptr<Checkpoint> resumed;  // rank 0's, when it resumes
+  std::unique_ptr<DirectoryLock> lock;  // rank 0's: it alone writes the outputs
   RunIdentity identity;
   std::exception_ptr failure;
 };
@@ -78,7 +80,10 @@ PreparedRun prepare_run(SolveOptions& o, MpiJob& job) {
   try {
     validate_solve_options(o);
     refuse_unsupported(o);
-    if (job.rank() == 0) run.resumed = open_resumed_run(o);
+    if (job.rank() == 0) {
+      run.lock = lock_outputs(o);  // before its checkpoint is read
+      run.resumed = open_resumed_run(o);
+    }
   } catch (...) {
     run.failure = std::current_exception();
   }
@@ -138,7 +143,9 @@ int run_solve_mpi(const SolveOptions& opts, MpiJob& job) {
   job.set_workers(WorkerState::Searching);
   if (job.rank() == 0) {
     MpiSubtreeServer server(job, int(run.model->vars.size()));
-    SharedSearch shared{&*run.model, &server, defer_depth_for(job.size(), o.threads), std::move(run.resumed)};
+    SharedSearch shared{&*run.model, &server, defer_depth_for(job.size(), o.threads),
+                        std::move(run.resumed)};
+    shared.lock = std::move(run.lock);
     // After the search the other ranks only wait (polling with sleeps): rank 0's later
     // phases take the threads of those on its node (2 ranks × 1 thread on 2 cores: 2).
     shared.later_threads = o.threads * node_ranks;

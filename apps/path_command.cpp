@@ -383,6 +383,8 @@ nlohmann::json path_json(const std::vector<double>& from, const std::vector<doub
 
 int run_path(const PathOptions& opts) {
   LoadedResult r = load_result(opts.result_dir);
+  if (const std::string note = certificate_note(r); !note.empty())
+    std::cerr << "aspects: note: " << note << '\n';
   std::vector<double> from = parse_pose(opts.from, "--from", r.model);
   std::vector<double> to = parse_pose(opts.to, "--to", r.model);
   if (opts.csnc < -1 || (opts.csnc >= 0 && uint32_t(opts.csnc) >= r.index.csnc_count))

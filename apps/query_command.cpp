@@ -158,6 +158,8 @@ nlohmann::json query_json(const std::vector<double>& pose, const QueryResult& q,
 
 int run_query(const QueryOptions& opts) {
   LoadedResult r = load_result(opts.result_dir);
+  if (const std::string note = certificate_note(r); !note.empty())
+    std::cerr << "aspects: note: " << note << '\n';
   std::vector<double> pose = parse_pose(opts.pose, "--pose", r.model);
   ModelEvaluator ev(r.model);
   QueryResult q = query_pose(r, ev, pose);

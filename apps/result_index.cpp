@@ -13,6 +13,7 @@
 #include "model/model.h"
 #include "le_reader.h"
 #include "le_writer.h"
+#include "sha256.h"
 
 namespace aspects {
 
@@ -26,12 +27,15 @@ namespace {
 //   u32 S  S × (u32 id  i32 csnc  nv × (f64 lo  f64 hi)  p × i8 sign)
 //   u32 U  U × (u32 id  u8 kind  n × (f64 lo  f64 hi))
 //   u32 L  L × (u32 a  u32 b  u32 shift_code  n × f64 witness)
-//   "end-index\n"
+//   str certificate_file  str certificate_sha256   (both empty: no certificate)
+//   "end-index\n"  32 bytes: SHA-256 of every byte before them
 const char kMagic[] = "aspects-index\n";
 const char kTrailer[] = "end-index\n";
+constexpr size_t kChecksumBytes = 32;
 
 // The index's bytes, into a string, or through a file in pieces of about a megabyte
-// (on 3-RPR at eps 0.3 the whole index is over a gigabyte).
+// (on 3-RPR at eps 0.3 the whole index is over a gigabyte); every byte hashed, for the
+// checksum that ends the index.
 class Writer : public LeWriter {
  public:
   explicit Writer(AtomicFile* file = nullptr) : file_(file) {}
@@ -43,16 +47,38 @@ class Writer : public LeWriter {
     u32(uint32_t(s.size()));
     bytes(s.data(), s.size());
   }
+  // Appends the hash of every byte so far, the last bytes of the index; returns the hash
+  // of the whole index, checksum included (what sha256sum prints of the file).
+  std::string checksum() {
+    hash_pending();
+    out_ += hash_.peek_raw();
+    hash_pending();
+    return hash_.hex();
+  }
   void flush() {
+    hash_pending();
     file_->write(out_);
     out_.clear();
+    hashed_ = 0;
   }
   std::string take() { return std::move(out_); }
 
  private:
+  void hash_pending() {
+    hash_.update(out_.data() + hashed_, out_.size() - hashed_);
+    hashed_ = out_.size();
+  }
   AtomicFile* file_;
   std::string out_;
+  size_t hashed_ = 0;  // bytes of out_ already hashed
+  Sha256Hasher hash_;
 };
+
+bool is_sha256_hex(const std::string& s) {
+  return s.size() == 64 && std::all_of(s.begin(), s.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
+}
 
 class Reader : public LeReader {
  public:
@@ -271,9 +297,15 @@ void encode(const IndexLink& l, Writer& w) {
   for (double x : l.witness) w.f64(x);
 }
 
-void encode_trailer(Writer& w) { w.bytes(kTrailer, std::strlen(kTrailer)); }
+// The certificate, the end marker and the checksum, which it returns.
+std::string encode_trailer(const CertificateId& cert, Writer& w) {
+  w.str(cert.file);
+  w.str(cert.sha256);
+  w.bytes(kTrailer, std::strlen(kTrailer));
+  return w.checksum();
+}
 
-void encode(const ResultIndex& idx, Writer& w) {
+std::string encode(const ResultIndex& idx, Writer& w) {
   encode_header(idx, w);
   w.u32(uint32_t(idx.solutions.size()));
   for (const auto& s : idx.solutions) encode(s, w);
@@ -281,7 +313,7 @@ void encode(const ResultIndex& idx, Writer& w) {
   for (const auto& u : idx.undecided) encode(u, w);
   w.u32(uint32_t(idx.links.size()));
   for (const auto& l : idx.links) encode(l, w);
-  encode_trailer(w);
+  return encode_trailer({idx.certificate_file, idx.certificate_sha256}, w);
 }
 
 // The records encoded as they come: the file, never the index, is whole.
@@ -388,34 +420,57 @@ ResultIndex decode_result_index(const std::string& bytes, const std::string& wha
     l.witness.resize(idx.n);
     for (auto& x : l.witness) x = r.f64();
   }
-  if (!r.literal(kTrailer) || r.left() != 0) r.fail("missing end marker");
+  idx.certificate_file = r.str(64);
+  idx.certificate_sha256 = r.str(64);
+  if (!idx.certificate_file.empty() && idx.certificate_file != "aspects.cert" &&
+      idx.certificate_file != "aspects.cert.zst")
+    r.fail("bad certificate name");
+  if (idx.certificate_file.empty() ? !idx.certificate_sha256.empty()
+                                   : !is_sha256_hex(idx.certificate_sha256))
+    r.fail("bad certificate hash");
+  if (!r.literal(kTrailer) || r.left() != kChecksumBytes)
+    r.fail("missing end marker or checksum");
+  const size_t body = bytes.size() - kChecksumBytes;
+  Sha256Hasher h;
+  h.update(bytes.data(), body);
+  const std::string raw = h.peek_raw();
+  if (bytes.compare(body, kChecksumBytes, raw) != 0)
+    throw IndexError(what + ": the result index does not match its checksum: damaged or "
+                     "edited since `aspects solve` wrote it (re-run `aspects solve --out`)");
+  h.update(raw.data(), raw.size());
+  idx.sha256 = h.hex();
   return idx;
 }
 
-void write_result_index(const std::string& path, const ResultIndex& idx) {
+std::string write_result_index(const std::string& path, const ResultIndex& idx) {
   AtomicFile f(path);
   Writer w(&f);
-  encode(idx, w);
+  const std::string checksum = encode(idx, w);
   w.flush();
   f.commit();
+  return checksum;
 }
 
-void write_result_index(const std::string& path, const Model& model, const AspectsResult& r,
-                        long precision_bits, double tau, double eps,
-                        const std::string& model_file) {
+std::string write_result_index(const std::string& path, const Model& model,
+                               const AspectsResult& r, long precision_bits, double tau,
+                               double eps, const std::string& model_file,
+                               const std::function<CertificateId()>& certificate) {
   AtomicFile f(path);
   Writer w(&f);
   encode_header(index_header(model, r, precision_bits, tau, eps, model_file), w);
   EncodeRecords encode_records(w);
   emit_records(model, r, encode_records);
-  encode_trailer(w);
+  const std::string checksum = encode_trailer(certificate(), w);
   w.flush();
   f.commit();
+  return checksum;
 }
 
 ResultIndex read_result_index(const std::string& result_dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
+  if (result_dir.find('\0') != std::string::npos)
+    throw IndexError("RESULT_DIR: the path contains a NUL character");
   if (!fs::is_directory(result_dir, ec))
     throw IndexError("RESULT_DIR " + result_dir + ": no such directory");
   std::string path = (fs::path(result_dir) / kResultIndexName).string();

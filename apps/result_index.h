@@ -7,9 +7,16 @@
 // command they print (Hansen-Sengupta at a point) and every link they cross (P3), and rely
 // on the index only for P1's uniqueness inside a solution box. Binary, little-endian
 // whatever the host, versioned; any anomaly is an IndexError naming the file.
+//
+// It names the certificate written with it (its file and sha256(cert), as check_cert
+// prints it) and ends with a SHA-256 of its own bytes, which summary.json records: a
+// damaged or edited index, or one beside another run's certificate or summary, is
+// refused (apps/result_files.h). The checksum is no signature: whoever rewrites the index
+// can rewrite it too; `aspects verify` ties the files to the certificate check_cert checks.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,7 +26,7 @@ namespace aspects {
 struct AspectsResult;
 struct Model;
 
-constexpr uint32_t kResultIndexVersion = 1;
+constexpr uint32_t kResultIndexVersion = 2;
 constexpr const char* kResultIndexName = "aspects.idx";
 
 // A missing, truncated, malformed or other-version index; reported with exit code 2.
@@ -64,6 +71,17 @@ struct ResultIndex {
   std::vector<IndexSolutionBox> solutions;  // by increasing id
   std::vector<IndexUndecidedBox> undecided;  // by increasing id
   std::vector<IndexLink> links;
+  // The certificate written with the index: "aspects.cert" or "aspects.cert.zst" and its
+  // sha256(cert), 64 hex digits; both empty without one (--no-cert).
+  std::string certificate_file, certificate_sha256;
+  // SHA-256 of the whole index file (64 hex digits, as sha256sum prints it; summary.json
+  // records it), set when it is read.
+  std::string sha256;
+};
+
+// The certificate of a run: set once it is written (empty: none).
+struct CertificateId {
+  std::string file, sha256;
 };
 
 // Every box of the index by increasing id, merging the two lists: f(true, i) for
@@ -89,13 +107,16 @@ std::string encode_result_index(const ResultIndex& idx);
 // Throws IndexError with `what` (e.g. the path) in the message.
 ResultIndex decode_result_index(const std::string& bytes, const std::string& what);
 
-// Atomic write (temporary name, then rename).
-void write_result_index(const std::string& path, const ResultIndex& idx);
-// The same bytes as write_result_index(path, build_result_index(...)), without holding the
-// index: the records are written as they are made.
-void write_result_index(const std::string& path, const Model& model, const AspectsResult& r,
-                        long precision_bits, double tau, double eps,
-                        const std::string& model_file);
+// Atomic write (temporary name, then rename); returns the index's checksum.
+std::string write_result_index(const std::string& path, const ResultIndex& idx);
+// The same bytes as write_result_index(path, index) where index is build_result_index(...)
+// with the certificate `certificate()` returns, without holding the index: the records are
+// written as they are made, and `certificate` is called after the last one (it may wait
+// for the certificate; an exception from it leaves no index). Returns the checksum.
+std::string write_result_index(const std::string& path, const Model& model,
+                               const AspectsResult& r, long precision_bits, double tau,
+                               double eps, const std::string& model_file,
+                               const std::function<CertificateId()>& certificate);
 // Reads DIR/aspects.idx; IndexError when DIR or the file is missing or malformed.
 ResultIndex read_result_index(const std::string& result_dir);
 

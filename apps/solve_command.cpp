@@ -40,6 +40,8 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   validate_solve_options(opts);
   return_large_blocks_to_system();
   SolveOptions o = opts;
+  // Held to the end: another run writing the directory would mix its files with ours.
+  const std::unique_ptr<DirectoryLock> lock = shared ? std::move(shared->lock) : lock_outputs(o);
   // Resuming: the options and the model come from the checkpoint (checked against any
   // given again); the parts it holds are not searched again.
   std::unique_ptr<Checkpoint> resumed = shared ? std::move(shared->resumed) : open_resumed_run(o);

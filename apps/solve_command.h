@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "io/directory_lock.h"
+
 namespace aspects {
 
 struct SolveOptions {
@@ -66,6 +68,8 @@ struct SharedSearch {
   int defer_depth;
   std::unique_ptr<Checkpoint> resumed;
   int later_threads = 0;  // threads of the phases after the search (0: --threads)
+  // The output directory's lock, taken before its checkpoint was read (null: none).
+  std::unique_ptr<DirectoryLock> lock = nullptr;
 };
 
 int run_solve(const SolveOptions& opts, SharedSearch* shared = nullptr);

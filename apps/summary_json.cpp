@@ -4,6 +4,7 @@
 
 #include "aspects_version.h"
 #include "search/stop_condition.h"
+#include "sha256.h"
 #include "solve_progress.h"
 
 namespace aspects {
@@ -141,11 +142,23 @@ json diagnostics_json(const SearchDiagnostics& d) {
                        {"constraint", d.refuted_by_constraint}}}};
 }
 
+// The hashes that tie the directory's files to one run; checked by query, path and
+// `aspects verify`.
+void add_hashes(json& j, const Model& m, const OutputHashes& h) {
+  auto or_null = [](const std::string& s) { return s.empty() ? json(nullptr) : json(s); };
+  j["model_sha256"] = sha256_hex_of(m.source);
+  j["certificate"] = or_null(h.certificate.file);
+  j["certificate_sha256"] = or_null(h.certificate.sha256);
+  j["index_sha256"] = or_null(h.index_sha256);
+}
+
 }  // namespace
 
-json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r) {
+json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r,
+                  const OutputHashes& hashes) {
   json j;
   add_run(j, m, o);
+  add_hashes(j, m, hashes);
   add_time_and_phases(j, r);
   j["boxes"] = boxes_json(r);
   j["links"] = {{"neighbor", r.neighbor_count}, {"certified", r.certified_links.size()}};

@@ -7,10 +7,19 @@
 
 #include "generalized_aspects.h"
 #include "model/model.h"
+#include "result_index.h"
 #include "solve_command.h"
 
 namespace aspects {
 
-nlohmann::json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r);
+// What ties summary.json to the other files of its directory (apps/result_files.h).
+struct OutputHashes {
+  CertificateId certificate;  // empty: none (--no-cert, or no directory)
+  std::string index_sha256;   // empty: no index written
+};
+
+// With the model's hash, and the certificate's and the index's (null when empty).
+nlohmann::json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r,
+                            const OutputHashes& hashes = {});
 
 }  // namespace aspects

@@ -15,6 +15,7 @@
 
 #include "aspects_version.h"
 #include "compressed_output.h"
+#include "hashing_output.h"
 
 namespace aspects {
 
@@ -37,13 +38,18 @@ std::string sha256_hex(const std::string& data) {
 CertificateWriter::CertificateWriter(const std::string& path, const Model& model,
                                      long precision, double tau, double eps, bool compress,
                                      int format)
-    : file_(path), compressed_(compress), format_(format), model_(model) {
-  f_ = file_.stream();
+    : file_(path), format_(format), model_(model) {
   // Level 3 (zstd's default) on one helper thread, beside the writing of the records
   // (bench/RESULTS.md has the sizes).
-  if (compress && !(f_ = open_compressed_output(file_.stream(), 3, 1)))
+  if (compress && !(compressor_ = open_compressed_output(file_.stream(), 3, 1)))
     throw std::runtime_error("cannot compress " + file_.temporary_path() + ": " +
                              std::strerror(errno));
+  // Hashed before compression, as check_cert hashes what it reads.
+  if (!(f_ = open_hashing_output(compressor_ ? compressor_ : file_.stream(), &sha256_))) {
+    const int err = errno;
+    if (compressor_) std::fclose(compressor_);
+    throw std::runtime_error("cannot hash " + file_.temporary_path() + ": " + std::strerror(err));
+  }
   buffer_.reset(new char[kBuffer]);
   std::setvbuf(f_, buffer_.get(), _IOFBF, kBuffer);
   n_ = model.n();
@@ -65,7 +71,8 @@ CertificateWriter::CertificateWriter(const std::string& path, const Model& model
 // An unfinished certificate's temporary is removed by file_.
 CertificateWriter::~CertificateWriter() {
   std::free(line_);
-  if (compressed_ && f_) std::fclose(f_);
+  if (f_) std::fclose(f_);
+  if (compressor_) std::fclose(compressor_);
   if (spool_) {
     std::fclose(spool_);
     std::remove((file_.temporary_path() + ".restored").c_str());
@@ -528,7 +535,10 @@ void CertificateWriter::csncs(const AspectsResult& r) {
 void CertificateWriter::close() {
   FILE* out = f_;
   f_ = nullptr;
-  if (compressed_ && std::fclose(out) != 0) file_.fail(errno);
+  if (std::fclose(out) != 0) file_.fail(errno);
+  FILE* z = compressor_;
+  compressor_ = nullptr;
+  if (z && std::fclose(z) != 0) file_.fail(errno);
   file_.commit();
 }
 

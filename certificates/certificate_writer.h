@@ -111,6 +111,9 @@ class CertificateWriter : public CertificateSink {
   // Links, CSNCs and claims; then closes and renames the file into place.
   void finish(const Model& model, const AspectsResult& result);
   long bytes() const { return bytes_; }  // of the text, before any compression
+  // After finish(): SHA-256 of the certificate's bytes before any compression (64 hex
+  // digits), the sha256(cert) that check_cert prints.
+  const std::string& sha256() const { return sha256_; }
 
  private:
   void line(const std::string& s);
@@ -139,7 +142,9 @@ class CertificateWriter : public CertificateSink {
   // it outlives file_'s closing of an unfinished certificate.
   std::unique_ptr<char[]> buffer_;
   AtomicFile file_;
-  FILE* f_ = nullptr;  // file_'s stream, or the compressor layered over it
+  FILE* f_ = nullptr;  // the hashing stream over compressor_ or file_'s stream
+  FILE* compressor_ = nullptr;  // with compression: layered over file_'s stream
+  std::string sha256_;
   std::unique_ptr<TreeRecordFile> top_;
   std::vector<std::unique_ptr<TreeRecordFile>> tasks_;
   std::vector<std::function<std::string()>> held_;  // per task: restore_later's fetch
@@ -150,7 +155,6 @@ class CertificateWriter : public CertificateSink {
   long spool_size_ = 0;
   int p_ = 0, n_ = 0;
   long lines_ = 0, leaves_ = 0, bytes_ = 0;
-  bool compressed_ = false;
   int format_ = 2;
   const Model& model_;
   std::string record_;  // scratch: one binary record

@@ -19,8 +19,8 @@ aspects_engine_test(test_constraints acceptance 900)
 if(TARGET aspects)
   add_test(NAME cli.solve_outputs
            COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/solve_outputs.sh $<TARGET_FILE:aspects>
-                   ${ASPECTS_TEST_ROBOTS_DIR}/prrp.robot)
-  set_tests_properties(cli.solve_outputs PROPERTIES TIMEOUT 60 LABELS cli)
+                   ${ASPECTS_TEST_ROBOTS_DIR}/prrp.robot $<TARGET_FILE:check_cert>)
+  set_tests_properties(cli.solve_outputs PROPERTIES TIMEOUT 120 LABELS cli)
   aspects_cli_test(solve_progress 0 "\\[aspects\\] done: [0-9]+ boxes processed" --
                    $<TARGET_FILE:aspects> solve ${ASPECTS_TEST_ROBOTS_DIR}/rprpr.robot --progress --quiet)
   aspects_cli_test(solve_default_robot 0 "robot RRRRR" "CSNCs: [0-9]+, filtered: [0-9]+"

@@ -35,7 +35,7 @@ echo "id,status" > "$tmp/garbage/aspects.idx"
 
 expect 2 "truncated/aspects.idx: malformed result index at byte [0-9]+: truncated" \
   "$aspects" query "$tmp/truncated" --pose 3,5
-expect 2 "result index version 9, this aspects reads version 1" \
+expect 2 "result index version 9, this aspects reads version 2" \
   "$aspects" query "$tmp/version" --pose 3,5
 expect 2 "bad magic" "$aspects" path "$tmp/garbage" --from 3,5 --to 0,8
 expect 2 "RESULT_DIR .*/empty: no aspects.idx" "$aspects" query "$tmp/empty" --pose 3,5

@@ -24,6 +24,7 @@
 #include "pose.h"
 #include "query_command.h"
 #include "result_index.h"
+#include "sha256.h"
 #include "test_util.h"
 
 using namespace aspects;
@@ -412,10 +413,10 @@ TEST(ResultIndex, RoundTripsExactlyAndRejectsDamage) {
     return std::string("accepted");
   };
   EXPECT_NE(message(bytes.substr(0, bytes.size() / 2)).find("truncated"), std::string::npos);
-  EXPECT_NE(message(bytes + "x").find("missing end marker"), std::string::npos);
+  EXPECT_NE(message(bytes + "x").find("missing end marker or checksum"), std::string::npos);
   std::string other = bytes;
-  other[14] = 2;  // the version follows the 14-byte magic
-  EXPECT_NE(message(other).find("result index version 2, this aspects reads version 1"),
+  other[14] = 3;  // the version follows the 14-byte magic
+  EXPECT_NE(message(other).find("result index version 3, this aspects reads version 2"),
             std::string::npos);
   std::string magic = bytes;
   magic[0] = 'A';
@@ -460,10 +461,20 @@ TEST(ResultIndex, StreamedIndexIsTheCollectedOneByteForByte) {
   std::filesystem::create_directories(dir);
   for (const AspectsResult* r : {&with, &without}) {
     const std::string path = dir + "/" + kResultIndexName;
-    write_result_index(path, m, *r, 53, cfg.tau, cfg.eps, "x");
+    const CertificateId cert{"aspects.cert.zst", std::string(64, 'a')};
+    const std::string sha =
+        write_result_index(path, m, *r, 53, cfg.tau, cfg.eps, "x", [&] { return cert; });
     std::ifstream in(path, std::ios::binary);
     const std::string streamed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const ResultIndex idx = build_result_index(m, *r, 53, cfg.tau, cfg.eps, "x");
+    ResultIndex idx = build_result_index(m, *r, 53, cfg.tau, cfg.eps, "x");
+    idx.certificate_file = cert.file;
+    idx.certificate_sha256 = cert.sha256;
+    // The returned hash is the whole file's, which reading it finds again.
+    EXPECT_EQ(sha, sha256_hex_of(streamed));
+    const ResultIndex back = decode_result_index(streamed, "t");
+    EXPECT_EQ(back.sha256, sha);
+    EXPECT_EQ(back.certificate_file, cert.file);
+    EXPECT_EQ(back.certificate_sha256, cert.sha256);
     ASSERT_GT(idx.solutions.size(), 100u);
     ASSERT_GT(idx.undecided.size(), 100u);
     ASSERT_GT(idx.links.size(), 10u);
@@ -491,14 +502,42 @@ TEST(ResultIndex, EveryTruncationAndByteFlipIsRejectedOrReadNeverACrash) {
     }
   }
   EXPECT_EQ(rejected, int(bytes.size()));  // no proper prefix is a valid index
+  // Every change of a byte is refused: the checksum that ends the index covers the rest
+  // (issue 50: a sign flipped in aspects.idx was printed by query as certified).
   std::mt19937 g(11);
+  int changed = 0;
+  rejected = 0;
   for (int k = 0; k < 3000; ++k) {
     std::string d = bytes;
     size_t at = std::uniform_int_distribution<size_t>(0, d.size() - 1)(g);
     d[at] = char(std::uniform_int_distribution<int>(0, 255)(g));
+    changed += d != bytes;
     try {
       decode_result_index(d, "t");
     } catch (const IndexError&) {
+      ++rejected;
     }
+  }
+  EXPECT_EQ(rejected, changed);
+  EXPECT_GT(changed, 2900);
+}
+
+TEST(ResultIndex, AFlippedSignIsRefusedByItsChecksum) {
+  // The first solution box's first sign, flipped as the review did: the index is refused
+  // with a message saying why, not read with the other sign.
+  LoadedResult& r = rrrrr();
+  ResultIndex flipped = r.index;
+  const std::string bytes = encode_result_index(r.index);
+  flipped.solutions[0].signs[0] = int8_t(-flipped.solutions[0].signs[0]);
+  std::string edited = encode_result_index(flipped);
+  ASSERT_EQ(edited.size(), bytes.size());
+  edited.replace(edited.size() - 32, 32, bytes.substr(bytes.size() - 32));  // the old checksum
+  try {
+    decode_result_index(edited, "t");
+    ADD_FAILURE() << "accepted";
+  } catch (const IndexError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "t: the result index does not match its checksum: damaged or edited since "
+              "`aspects solve` wrote it (re-run `aspects solve --out`)");
   }
 }

@@ -40,7 +40,9 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     False) and every claim still holds. Ctrl-C does the same: the run stops within a
     second and the partial result is returned (with a warning). out: a directory, written
     as `aspects solve --out` writes it (summary.json, boxes.csv, aspects.cert,
-    aspects.idx; certificate=False leaves out the certificate). progress: None (quiet),
+    aspects.idx; certificate=False leaves out the certificate): the files of a run written
+    there before are removed first, and the directory is locked while the run writes it
+    (ValueError at once when another run holds it). progress: None (quiet),
     True (tqdm when installed, else a line on stderr now and then), or a callable given a
     dict (processed, solutions, undecided, decided share, seconds, phases) about every
     0.1 s; an exception it raises stops the run and is raised here.

@@ -117,8 +117,7 @@ class Result:
         (outcome "found" with waypoints, or why there is none)."""
         if csnc is not None and (isinstance(csnc, bool) or not isinstance(csnc, int)):
             raise TypeError("csnc must be an integer")
-        return self._core._path(self._pose(start, "start"), self._pose(goal, "goal"),
-                                -1 if csnc is None else csnc)
+        return self._core._path(self._pose(start, "start"), self._pose(goal, "goal"), csnc)
 
     def _pose(self, pose, what):
         """A pose as a list of floats, one finite number per pose variable (the C++ side
@@ -134,14 +133,21 @@ class Result:
         return values
 
     def check(self, threads=None, trust_factors=False):
-        """Runs check_cert --json on the certificate in the result directory; returns its
-        verdict (a dict: "verdict" VERIFIED, UNCHECKED or a failure, and the counts)."""
+        """Runs check_cert --json on the result's certificate (the one aspects.idx records);
+        returns its verdict (a dict: "verdict" VERIFIED, UNCHECKED or a failure, and the
+        counts). Raises ValueError when there is none, and when the certificate check_cert
+        read is not this result's: its sha256 or its model's differs from those the result
+        records (a file of another run). The index and summary's own ties to it: `aspects
+        verify DIR`."""
         if not self.directory:
             raise ValueError("no certificate: solve with out=DIR (or load a directory)")
-        cert = next((os.path.join(self.directory, f) for f in ("aspects.cert", "aspects.cert.zst")
-                     if os.path.isfile(os.path.join(self.directory, f))), None)
-        if cert is None:
-            raise ValueError(f"{self.directory}: no aspects.cert (solved with certificate=False?)")
+        name = self._core.certificate_file
+        if not name:
+            raise ValueError(f"{self.directory}: the result has no certificate (solved with "
+                             "certificate=False)")
+        cert = os.path.join(self.directory, name)
+        if not os.path.isfile(cert):
+            raise ValueError(f"{cert}: missing (the result's certificate)")
         cmd = [_check_cert_program(), "--json", cert]
         if threads is not None:
             cmd += ["--threads", str(int(threads))]
@@ -153,6 +159,14 @@ class Result:
         except ValueError:
             raise RuntimeError(f"check_cert gave no JSON (exit {run.returncode}): "
                                f"{run.stderr.strip()}") from None
+        # Read after it was written? Its hashes say whether it is still the result's.
+        for key, want, what in (("sha256_model", self._core.model_sha256, "model"),
+                                ("sha256_cert", self._core.certificate_sha256, "certificate")):
+            got = verdict.get(key)
+            if got is not None and got != want:
+                raise ValueError(f"{cert} is not this result's certificate: its {what} sha256 "
+                                 f"is {got[:16]}, the result's {want[:16]} (a file of another "
+                                 "run; solve again)")
         return verdict
 
     def plot(self, out=None, path=None, title=""):

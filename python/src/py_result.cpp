@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <optional>
 
 #include "model/model_eval.h"
 #include "path_command.h"
@@ -16,6 +17,7 @@
 #include "query_command.h"
 #include "result_index.h"
 #include "search/output_boxes.h"
+#include "sha256.h"
 #include "solve_command.h"
 
 namespace aspects::py {
@@ -148,6 +150,14 @@ void bind_result(pyb::module_& m) {
                                  f.emplace_back(x.origin, x.text);
                                return f;
                              })
+      .def_property_readonly("model_sha256",
+                             [](const PyResult& p) {
+                               return sha256_hex_of(p.loaded->index.model_source);
+                             })
+      .def_property_readonly("certificate_file",
+                             [](const PyResult& p) { return p.loaded->index.certificate_file; })
+      .def_property_readonly("certificate_sha256",
+                             [](const PyResult& p) { return p.loaded->index.certificate_sha256; })
       .def_property_readonly("link_count",
                              [](const PyResult& p) { return p.loaded->index.links.size(); })
       .def("_csnc_signs", [](const PyResult& p) { return csnc_signs(*p.loaded); })
@@ -162,18 +172,20 @@ void bind_result(pyb::module_& m) {
            pyb::arg("pose"))
       .def("_path",
            [](const PyResult& p, const std::vector<double>& a, const std::vector<double>& b,
-              int csnc) {
+              std::optional<long> csnc) {
              const LoadedResult& r = *p.loaded;
              std::vector<double> from = checked_pose(r, a, "start");
              std::vector<double> to = checked_pose(r, b, "goal");
-             if (csnc < -1 || (csnc >= 0 && uint32_t(csnc) >= r.index.csnc_count))
+             // None: any CSNC (plan_path's -1); a negative one is no CSNC.
+             if (csnc && (*csnc < 0 || *csnc >= long(r.index.csnc_count)))
                throw UsageError("csnc must be between 0 and " +
-                                std::to_string(int(r.index.csnc_count) - 1) + ", got " +
-                                std::to_string(csnc));
+                                std::to_string(long(r.index.csnc_count) - 1) + ", got " +
+                                std::to_string(*csnc));
              ModelEvaluator ev(r.model);
-             return to_python(path_json(from, to, plan_path(r, ev, from, to, csnc)));
+             return to_python(
+                 path_json(from, to, plan_path(r, ev, from, to, csnc ? int(*csnc) : -1)));
            },
-           pyb::arg("start"), pyb::arg("goal"), pyb::arg("csnc") = -1);
+           pyb::arg("start"), pyb::arg("goal"), pyb::arg("csnc") = pyb::none());
   m.def(
       "_load",
       [](const std::string& dir) {

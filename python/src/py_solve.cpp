@@ -177,6 +177,8 @@ pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::obje
     progress.phases.emplace_back(phase, seconds);
     progress.changed = true;
   };
+  // Held to the end: another run writing the directory would mix its files with ours.
+  const std::unique_ptr<DirectoryLock> lock = lock_outputs(o);
   std::unique_ptr<CertificateWriter> cert = open_outputs(o, model);
   cfg.certificate = cert.get();
 
@@ -197,10 +199,14 @@ pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::obje
           progress.decided = decided_share(model, r);
           progress.changed = true;
         }
-        if (!o.out_dir.empty()) write_solve_outputs(o, model, cert.get(), r);
-        summary = summary_json(model, o, r);
-        loaded = std::make_shared<LoadedResult>(load_result_from(
-            build_result_index(model, r, o.prec, o.tau, o.eps, pm.file), pm.file));
+        OutputHashes hashes;
+        if (!o.out_dir.empty()) hashes = write_solve_outputs(o, model, cert.get(), r);
+        summary = summary_json(model, o, r, hashes);
+        ResultIndex index = build_result_index(model, r, o.prec, o.tau, o.eps, pm.file);
+        index.certificate_file = hashes.certificate.file;  // as the written index records
+        index.certificate_sha256 = hashes.certificate.sha256;
+        index.sha256 = hashes.index_sha256;
+        loaded = std::make_shared<LoadedResult>(load_result_from(std::move(index), pm.file));
       },
       stop, progress, callback, interrupted);
   set_working_precision(o.prec);  // as load_result does on the thread that queries

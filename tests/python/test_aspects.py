@@ -26,6 +26,8 @@ EXE = os.environ["ASPECTS_EXE"]
 ROBOTS = os.environ["ASPECTS_ROBOTS"]
 PRRP = os.path.join(ROBOTS, "prrp.robot")
 RPRPR = os.path.join(ROBOTS, "rprpr.robot")
+with open(os.path.join(ROBOTS, "rrrrr.robot")) as _f:
+    RRRRR_TEXT = _f.read()
 
 
 def cli(*args, check=True):
@@ -175,6 +177,77 @@ def test_check_without_directory():
         r.check()
 
 
+def test_a_run_removes_the_certificate_it_does_not_rewrite(tmp_path):
+    """Issue 50, item 3: RRRRR's certificate stayed beside a PRRP result solved with
+    certificate=False, and check() verified it (lower bound 10)."""
+    d = str(tmp_path / "d")
+    rrrrr = aspects.solve(aspects.Model.from_string(RRRRR_TEXT, "rrrrr"), eps=0.5, out=d)
+    assert rrrrr.check()["lower_bound"] == 10
+    prrp = aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, out=d, certificate=False)
+    assert sorted(os.listdir(d)) == [".lock", "aspects.idx", "boxes.csv", "summary.json"]
+    with pytest.raises(ValueError, match=r"the result has no certificate \(solved with "
+                                         r"certificate=False\)$"):
+        prrp.check()
+    # Compressed after plain: the plain one goes.
+    aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, out=d)
+    r = aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, out=d, compress_certificate=True)
+    assert "aspects.cert" not in os.listdir(d) and "aspects.cert.zst" in os.listdir(d)
+    v = r.check()
+    assert (v["verdict"], v["lower_bound"], v["sha256_cert"]) == (
+        "VERIFIED", 4, r.summary["certificate_sha256"])
+
+
+def test_check_and_load_refuse_another_runs_certificate(tmp_path):
+    """A certificate put back from another run: of another model, load() refuses the
+    directory (the certificate's model line); of the same model at another eps, check()
+    refuses it after check_cert (its sha256 is not the one the index records)."""
+    a, b, c = (str(tmp_path / n) for n in "abc")
+    aspects.solve(aspects.Model.from_string(RRRRR_TEXT, "rrrrr"), eps=1, out=a)
+    aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, out=b)
+    aspects.solve(aspects.Model.from_file(PRRP), eps=0.2, out=c)
+    with open(os.path.join(b, "aspects.cert"), "rb") as f:
+        prrp_cert = f.read()
+    with open(os.path.join(b, "aspects.cert"), "wb") as f:
+        f.write(open(os.path.join(a, "aspects.cert"), "rb").read())
+    with pytest.raises(aspects.ResultError, match=r"aspects.cert: its model \(sha256 "
+                                                  r"[0-9a-f]{16}\) is not the result's"):
+        aspects.load(b)
+    with open(os.path.join(b, "aspects.cert"), "wb") as f:
+        f.write(prrp_cert)
+    with open(os.path.join(c, "aspects.cert"), "wb") as f:
+        f.write(prrp_cert)  # eps 0.1's beside eps 0.2's index
+    r = aspects.load(c)
+    with pytest.raises(ValueError, match=r"is not this result's certificate: its certificate "
+                                         r"sha256 is [0-9a-f]{16}, the result's [0-9a-f]{16}"):
+        r.check()
+    assert aspects.load(b).check()["verdict"] == "VERIFIED"
+
+
+def test_out_with_a_nul_character_creates_nothing(tmp_path):
+    """Issue 50, item 8: out="a\\0b" created directory a, then failed."""
+    with pytest.raises(ValueError, match="path contains a NUL character"):
+        aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, out=str(tmp_path / "a") + "\0b")
+    assert os.listdir(tmp_path) == []
+    with pytest.raises(aspects.ResultError, match=r"a\x00b: not a directory"):
+        aspects.load(str(tmp_path / "a") + "\0b")
+
+
+def test_out_locked_by_another_run_is_refused_at_once(tmp_path):
+    """Issue 50, item 4: two runs writing one directory mixed their files."""
+    import fcntl
+    d = tmp_path / "d"
+    d.mkdir()
+    with open(d / ".lock", "w") as held:
+        fcntl.flock(held, fcntl.LOCK_EX)
+        start = time.monotonic()
+        with pytest.raises(ValueError, match=r"d is being written by another run \(it holds "
+                                              r".*/d/\.lock\): wait for that run to end"):
+            aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, out=str(d))
+        assert time.monotonic() - start < 5
+        assert sorted(os.listdir(d)) == [".lock"]
+    aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, out=str(d))  # released: it runs
+
+
 def test_max_boxes_gives_a_partial_result():
     r = aspects.solve(aspects.Model.from_file(PRRP), eps=0.1, max_boxes=10)
     assert not r.complete and r.stopped_by == "max-boxes"
@@ -267,6 +340,9 @@ def test_bad_csnc(rprpr):
     _, _, r, _ = rprpr
     with pytest.raises(ValueError, match="csnc must be between 0 and 1"):
         r.path([3, 5], [4, 2.5], csnc=7)
+    # Issue 50, item 8: -1 was taken as "any CSNC".
+    with pytest.raises(ValueError, match=r"^csnc must be between 0 and 1, got -1$"):
+        r.path([3, 5], [4, 2.5], csnc=-1)
     with pytest.raises(TypeError):
         r.path([3, 5], [4, 2.5], csnc="0")
 
