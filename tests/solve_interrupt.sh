@@ -3,8 +3,9 @@
 # search has begun (its first progress line; never a blind sleep):
 #   once    the search stops, and the links, CSNCs and bound are made on the boxes it made
 #           (before: "links: 0 certified", every solution box a CSNC); exit 3; the default
-#           checkpoint is written, and the exact command that resumes it is printed, and
-#           resumes to a complete result (the checkpoint then removed);
+#           checkpoint (every 60 s, and when stopped) is written, and the exact command
+#           that resumes it is printed, and resumes to a complete result (the checkpoint
+#           then removed);
 #   twice   the second stops the rest at once: exit 3, it says so, and how to resume;
 #   off     --checkpoint 0: no checkpoint, and no resume command (it says why);
 #   no_out  without --out: nothing to resume from, and it says why.
@@ -58,6 +59,23 @@ csncs=$(field "CSNCs: " | sed 's/,.*//')
 [ "$csncs" -lt "$solutions" ] || fail "once: $csncs CSNCs for $solutions solution boxes"
 grep -q "unexplored" "$work/out" || fail "once: not a partial result"
 [ -f "$d/checkpoint" ] || fail "once: no checkpoint"
+# The interval the checkpoint records (layout: apps/checkpoint.cpp): the default, 60 s.
+interval=$(/usr/bin/python3 - "$d/checkpoint" <<'PY'
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+at = len(b"aspects-checkpoint 2\n")
+def skip_str():
+    global at
+    (n,) = struct.unpack_from("<Q", b, at)
+    at += 8 + n
+for _ in range(4): skip_str()   # version, model_sha256, model_text, model_file
+at += 8 + 8 + 8                 # eps, tau, precision
+skip_str()                      # bisect
+at += 3 + 4                     # all_links, no_cert, cert_format, defer_depth
+print("%g" % struct.unpack_from("<d", b, at)[0])
+PY
+)
+[ "$interval" = 60 ] || fail "once: the checkpoint's interval is $interval, not the default 60 s"
 grep -qxF "aspects: to go on from its checkpoint: $aspects solve --resume $d" "$work/err" ||
   fail "once: no resume command"
 /usr/bin/python3 -c "
