@@ -96,7 +96,8 @@ void add_solve(CLI::App& app, Commands& c) {
                     "stop the search before the process (under mpirun: rank 0) needs more than "
                     "GiB of memory (exit 3)");
   solve->add_option("--checkpoint", so.checkpoint,
-                    "every SECONDS and when stopped, save a resumable state in the --out directory");
+                    "every SECONDS and when stopped, save a resumable state in the --out "
+                    "directory (default with --out: 60, and when stopped; 0: none)");
   solve->add_option("--resume", so.resume_dir,
                     "continue the stopped run of DIR from its checkpoint (same outputs as an "
                     "uninterrupted run)");
@@ -285,6 +286,7 @@ int main(int argc, char** argv) {
     std::cerr << "aspects: " << e.what() << "\n(run 'aspects --help' for usage)\n";
     return 2;
   }
+  commands.solve_options.program = argv[0];  // a stopped run prints the command that resumes it
   const Launch launch = detect_launch();
   if (*commands.solve && launch.by_launcher) return run_solve_in_job(commands, launch);
   return run_reporting_errors([&] { return run_command(commands); });

@@ -1,5 +1,6 @@
-// `aspects solve --checkpoint SECONDS`: saves the search's state into the output directory
-// while it runs (apps/checkpoint.h). A write that fails keeps the previous checkpoint and
+// `aspects solve --checkpoint SECONDS` (by default kDefaultCheckpointSeconds with --out in a
+// single process): saves the search's state into the output directory while it runs, and
+// when it stops (apps/checkpoint.h). A write that fails keeps the previous checkpoint and
 // is reported; the run goes on, and only a stopped run whose last write failed is an error
 // (it cannot be resumed).
 #pragma once

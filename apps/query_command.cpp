@@ -7,6 +7,7 @@
 
 #include "generalized_aspects.h"  // UndecidedKind
 #include "pose.h"
+#include "same_command.h"
 
 namespace aspects {
 
@@ -32,6 +33,60 @@ BoxesAtPose solution_boxes_at(const LoadedResult& r, const std::vector<double>& 
   return found;
 }
 
+namespace {
+
+// Each solution once: answers proved one (same_command.h) are merged into the first of
+// them, in the order given; pairs of the remaining answers neither proved one nor
+// distinct are recorded.
+void merge_same_commands(ModelEvaluator& ev, const std::vector<double>& pose, double tau,
+                         HsWorkspace& ws, QueryResult& q) {
+  const size_t n = q.answers.size();
+  if (n < 2) return;
+  std::vector<SameCommand> outcome(n * n, SameCommand::Unknown);
+  std::vector<size_t> group(n);  // joined: each points to an earlier one, or to itself
+  auto root = [&](size_t i) {
+    while (group[i] != i) i = group[i];
+    return i;
+  };
+  for (size_t i = 0; i < n; ++i) {
+    group[i] = i;
+    for (size_t k = 0; k < i; ++k) {
+      SameCommand& o = outcome[i * n + k];
+      o = same_command(ev, pose, q.answers[k].command, q.answers[i].command, tau, ws);
+      outcome[k * n + i] = o;
+      if (o != SameCommand::Same) continue;
+      const size_t a = root(i), b = root(k);  // one solution: the earlier root stays
+      group[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  for (size_t i = 0; i < n; ++i) group[i] = root(i);
+  // A group's members are one solution: two groups are distinct when some pair is.
+  std::vector<QueryAnswer> kept;
+  std::vector<size_t> first;  // the answer each kept one came from
+  for (size_t i = 0; i < n; ++i) {
+    if (group[i] == i) {
+      kept.push_back(std::move(q.answers[i]));
+      first.push_back(i);
+      continue;
+    }
+    QueryAnswer& into = kept[size_t(std::find(first.begin(), first.end(), group[i]) - first.begin())];
+    into.same_boxes.push_back(q.answers[i].box);
+    into.same_csncs.push_back(q.answers[i].csnc);
+  }
+  for (size_t a = 0; a < first.size(); ++a)
+    for (size_t b = a + 1; b < first.size(); ++b) {
+      bool distinct = false;
+      for (size_t i = 0; i < n && !distinct; ++i)
+        for (size_t k = 0; k < n && !distinct; ++k)
+          distinct = group[i] == first[a] && group[k] == first[b] &&
+                     outcome[i * n + k] == SameCommand::Distinct;
+      if (!distinct) q.not_proved_distinct.push_back({kept[a].box, kept[b].box});
+    }
+  q.answers = std::move(kept);
+}
+
+}  // namespace
+
 QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vector<double>& pose) {
   QueryResult q;
   HsWorkspace ws;
@@ -41,12 +96,13 @@ QueryResult query_pose(const LoadedResult& r, ModelEvaluator& ev, const std::vec
     const IndexSolutionBox& s = r.index.solutions[i];
     PointCommand c = certified_command(ev, s.lo.data(), s.hi.data(), pose, r.index.tau, ws);
     if (c.status == PointCommandStatus::Certified)
-      q.answers.push_back({s.csnc, s.id, i, std::move(c)});
+      q.answers.push_back({s.csnc, s.id, i, std::move(c), {}, {}});
     else
       q.unproved.push_back(s.id);
   }
   std::stable_sort(q.answers.begin(), q.answers.end(),
                    [](const QueryAnswer& a, const QueryAnswer& b) { return a.csnc < b.csnc; });
+  merge_same_commands(ev, pose, r.index.tau, ws, q);
   if (!q.answers.empty()) {
     q.outcome = QueryOutcome::Answered;
     return q;
@@ -89,7 +145,9 @@ void print_text(const LoadedResult& r, const std::vector<double>& pose, const Qu
     names += (k ? "; " : "") + r.index.factors[k].origin;
   switch (q.outcome) {
     case QueryOutcome::Answered: {
-      std::printf("%zu certified command(s); signs of: %s\n", q.answers.size(), names.c_str());
+      std::printf("%zu certified command(s)%s; signs of: %s\n", q.answers.size(),
+                  q.not_proved_distinct.empty() ? "" : " (some may be one: below)",
+                  names.c_str());
       int32_t last = -2;
       for (const QueryAnswer& a : q.answers) {
         const IndexSolutionBox& s = r.index.solutions[a.solution];
@@ -98,7 +156,14 @@ void print_text(const LoadedResult& r, const std::vector<double>& pose, const Qu
                       uint32_t(a.csnc) < r.index.filtered ? "" : " (filtered out: small)",
                       signs_text(s.signs).c_str());
         last = a.csnc;
-        std::printf("  box %u:", a.box);
+        std::printf("  box %u", a.box);
+        for (size_t k = 0; k < a.same_boxes.size(); ++k) {
+          std::printf(k ? ", %u" : a.same_boxes.size() > 1 ? " (and boxes %u" : " (and box %u",
+                      a.same_boxes[k]);
+          if (a.same_csncs[k] != a.csnc) std::printf(" of CSNC %d", a.same_csncs[k]);
+        }
+        if (!a.same_boxes.empty()) std::printf(": the same command, proved)");
+        std::printf(":");
         for (int j = 0; j < m.n(); ++j)
           std::printf(" %s in [%.17g, %.17g]", m.vars[m.command[j]].name.c_str(), a.command.lo[j],
                       a.command.hi[j]);
@@ -130,6 +195,9 @@ void print_text(const LoadedResult& r, const std::vector<double>& pose, const Qu
                   "face)\n", q.unknown.size(), q.unknown.front());
       break;
   }
+  for (const auto& [a, b] : q.not_proved_distinct)
+    std::printf("  (the commands of boxes %u and %u were proved neither one solution nor two: "
+                "both are listed, and may be one)\n", a, b);
   for (uint32_t id : q.unproved)
     if (q.outcome == QueryOutcome::Answered)
       std::printf("  (box %u also contains the pose; its command could not be proved)\n", id);
@@ -143,13 +211,19 @@ nlohmann::json query_json(const std::vector<double>& pose, const QueryResult& q,
   j["pose"] = pose;
   j["outcome"] = query_outcome_name(q.outcome);
   j["answers"] = nlohmann::json::array();
-  for (const QueryAnswer& a : q.answers)
+  for (const QueryAnswer& a : q.answers) {
+    // same_boxes: the other boxes proved to hold this command, with their CSNCs.
     j["answers"].push_back({{"csnc", a.csnc},
                             {"box", a.box},
+                            {"same_boxes", a.same_boxes},
+                            {"same_csncs", a.same_csncs},
                             {"command_lo", a.command.lo},
                             {"command_hi", a.command.hi},
                             {"width", a.command.width()},
                             {"signs", r.index.solutions[a.solution].signs}});
+  }
+  j["not_proved_distinct"] = nlohmann::json::array();
+  for (const auto& [a, b] : q.not_proved_distinct) j["not_proved_distinct"].push_back({a, b});
   j["unproved_boxes"] = q.unproved;
   j["undecided_boxes"] = q.undecided;
   j["membership_unknown_boxes"] = q.unknown;

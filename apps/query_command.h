@@ -1,6 +1,8 @@
-// `aspects query RESULT_DIR --pose X`: the commands of a pose, one per solution box that
-// contains it, grouped by CSNC (paper 4.1: κ_S in each box S), each enclosure proved at
-// the pose (point_command.h). A pose in no solution box is classified with the coverage
+// `aspects query RESULT_DIR --pose X`: the commands of a pose, from the solution boxes that
+// contain it, grouped by CSNC (paper 4.1: κ_S in each box S), each enclosure proved at
+// the pose (point_command.h). A pose on a face shared by boxes has its command certified in
+// each: it is listed once, with every box, when proved one solution (same_command.h), and
+// the commands neither proved one nor proved distinct are named. A pose in no solution box is classified with the coverage
 // of the result (S ∪ U holds every feasible solution of the domain). Membership in a box
 // is decided exactly (pose.h), so "in no box" is a proof, not a failed test.
 #pragma once
@@ -8,6 +10,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "loaded_result.h"
@@ -26,6 +29,10 @@ struct QueryAnswer {
   uint32_t box = 0;        // box id (boxes.csv)
   size_t solution = 0;     // index into ResultIndex::solutions
   PointCommand command;
+  // Other solution boxes whose certified command at the pose is proved this one (ids,
+  // and their CSNCs): the command is listed once.
+  std::vector<uint32_t> same_boxes;
+  std::vector<int32_t> same_csncs;
 };
 
 enum class QueryOutcome {
@@ -40,7 +47,10 @@ enum class QueryOutcome {
 
 struct QueryResult {
   QueryOutcome outcome = QueryOutcome::OutsideWorkspace;
-  std::vector<QueryAnswer> answers;  // certified ones, by (CSNC, box id)
+  std::vector<QueryAnswer> answers;  // certified ones, one per solution, by (CSNC, box id)
+  // Pairs of answers (their boxes) neither proved one solution nor proved distinct: both
+  // listed, and they may be one.
+  std::vector<std::pair<uint32_t, uint32_t>> not_proved_distinct;
   std::vector<uint32_t> unproved;    // solution boxes containing the pose, no proof
   std::vector<uint32_t> undecided;   // undecided boxes containing the pose
   size_t unexplored = 0;             // of which cells a stopped run never searched

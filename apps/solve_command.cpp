@@ -45,6 +45,9 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   // Resuming: the options and the model come from the checkpoint (checked against any
   // given again); the parts it holds are not searched again.
   std::unique_ptr<Checkpoint> resumed = shared ? std::move(shared->resumed) : open_resumed_run(o);
+  // A single process checkpoints by default (a resumed run keeps its checkpoint's interval).
+  if (!shared && !resumed && !o.was_given("--checkpoint") && !o.out_dir.empty())
+    o.checkpoint = kDefaultCheckpointSeconds;
   complete_options(o);
   set_arithmetic(o);
   Model model = shared ? std::move(*shared->model) : solve_model(o, resumed.get());
@@ -81,7 +84,9 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   if (!o.out_dir.empty()) write_solve_outputs(o, model, cert.get(), r);
   if (!o.quiet) print_solve_report(o, model, r);
   if (r.complete() && !o.out_dir.empty()) std::remove(checkpoints.path().c_str());  // done with it
-  return solve_exit_status(r, checkpoints.last_write());
+  return solve_exit_status(
+      r, checkpoints.last_write(),
+      resume_hint(o, checkpoints.last_write(), resumed != nullptr, checkpoints.path()));
 }
 
 }  // namespace aspects

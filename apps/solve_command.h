@@ -31,10 +31,12 @@ struct SolveOptions {
   double time_limit = -1;    // seconds
   long max_boxes = -1;       // boxes processed
   double memory_limit = -1;  // GiB
-  // Checkpoints (apps/checkpoint.h): the interval in seconds (negative: none), and the
+  // Checkpoints (apps/checkpoint.h): the interval in seconds (0: none; not given:
+  // kDefaultCheckpointSeconds with --out in a single process, none otherwise), and the
   // directory of a stopped run to continue (its options come from its checkpoint).
   double checkpoint = -1;
   std::string resume_dir;
+  std::string program = "aspects";  // as invoked (argv[0]): for the command that resumes
   // The scaling study (apps/subtree_stats.h): where to write each part's cost (empty:
   // nowhere), and the depth where the tree is cut into subtrees (-1: the default, 8, or an
   // MPI job's). Neither changes the result.
@@ -48,6 +50,12 @@ struct SolveOptions {
 
 // Exit status of a run stopped by a limit or a signal (its outputs are a partial result).
 constexpr int kExitStopped = 3;
+
+// The checkpoint interval of a single process with --out when --checkpoint is not given:
+// a run stopped after a minute or more, or by a limit or Ctrl-C at any time, can be
+// resumed. Not in an MPI job of several processes, where a checkpoint makes every part's
+// certificate records pass through rank 0 during the search (README "Distributed runs").
+constexpr double kDefaultCheckpointSeconds = 60;
 
 // A bad option value; reported with exit code 2.
 class UsageError : public std::runtime_error {

@@ -71,6 +71,9 @@ void validate_solve_options(const SolveOptions& o) {
   if (o.memory_limit != -1 && !(o.memory_limit > 0 && o.memory_limit < 1e6))
     throw UsageError("--memory-limit must be a positive number of GiB (got " +
                      std::to_string(o.memory_limit) + ")");
+  if (o.was_given("--checkpoint") && !(o.checkpoint >= 0 && o.checkpoint < 1e9))
+    throw UsageError("--checkpoint must be a number of seconds, 0 for no checkpoint (got " +
+                     std::to_string(o.checkpoint) + ")");
   validate_scaling_options(o);
 }
 
@@ -112,7 +115,14 @@ void set_limits(const SolveOptions& o, StopCondition& stop) {
   if (o.max_boxes > 0) stop.set_max_boxes(o.max_boxes);
   if (o.memory_limit > 0) stop.set_memory_limit(o.memory_limit * kGiB, kReservePerBox);
   stop.set_watch_signals(true);
-  watch_stop_signals();
+  StopSignalNotes notes;
+  notes.first_interrupt =
+      "\naspects: interrupted: no more boxes are searched; the links, CSNCs, bound and "
+      "witnesses are finished on what was searched (Ctrl-C again to stop at once)\n";
+  notes.second_interrupt =
+      "\naspects: interrupted again: stopping now, with what is established so far "
+      "(Ctrl-C again to kill)\n";
+  watch_stop_signals(notes);
 }
 
 void attach_progress(SolveProgress& progress, AspectsConfig& cfg) {

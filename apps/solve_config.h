@@ -33,8 +33,10 @@ void choose_bisect(SolveOptions& o, const Model& m);
 // progress and checkpoints are attached by their own steps.
 AspectsConfig engine_config(const SolveOptions& o);
 
-// The limits of a long run and SIGINT/SIGTERM: the search stops cleanly and the outputs
-// are a partial result.
+// The limits of a long run and the signals: the search stops cleanly and the outputs
+// are a partial result. The first SIGINT (Ctrl-C) stops the search and lets the phases
+// after it finish on what was searched; a second one, or SIGTERM, stops the whole run; a
+// third kills. Each Ctrl-C says on stderr what it does.
 void set_limits(const SolveOptions& o, StopCondition& stop);
 
 void attach_progress(SolveProgress& progress, AspectsConfig& cfg);

@@ -36,9 +36,11 @@ std::string SolveProgress::share_line(double share, double t) {
 
 void SolveProgress::tick(const SearchStats& s) {
   auto now = std::chrono::steady_clock::now();
-  // A terminal gets one line rewritten in place; a log gets a line every 10 s.
-  if (now - last_ < std::chrono::milliseconds(tty_ ? 500 : 10000)) return;
+  // A terminal gets one line rewritten in place; a log gets a first line after 1 s (the
+  // search has begun: Ctrl-C now keeps what it made), then one every 10 s.
+  if (now - last_ < std::chrono::milliseconds(tty_ ? 500 : lines_ == 0 ? 1000 : 10000)) return;
   last_ = now;
+  ++lines_;
   double t = std::chrono::duration<double>(now - start_).count();
   std::string share = share_line(s.resumed_share + s.decided.load(), t);
   std::fprintf(stderr,

@@ -31,6 +31,7 @@ class SolveProgress {
   bool tty_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
   double last_t_ = 0, last_share_ = -1, rate_ = 0;  // rate: share per second, smoothed
+  long lines_ = 0;  // progress lines printed
 };
 
 // The share of the initial domain's volume outside the unexplored boxes of r (1 for a

@@ -36,9 +36,14 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
   // The phase during which a stop was first seen: it and those after it are partial (a
   // spent max-boxes budget stops the search alone).
   PhaseClock clock([&](const std::string& phase, double seconds) {
+    const bool search = phase == std::string("search");
     if (out.stopped_in.empty() && config.stop &&
-        (phase == std::string("search") ? config.stop->stopped() : config.stop->poll()))
+        (search ? config.stop->stopped() : config.stop->poll()))
       out.stopped_in = phase;
+    // The merge never stops (it assembles what was searched): the next phase is the cut one.
+    if (!search && phase != std::string("merge") && out.run_stopped_in.empty() && config.stop &&
+        config.stop->poll())
+      out.run_stopped_in = phase;
     if (config.phase_done) config.phase_done(phase, seconds);
   });
   Parallel parallel(config.threads);

@@ -53,6 +53,9 @@ struct AspectsResult {
   long unexplored = 0;
   StopReason stopped_by = StopReason::None;
   std::string stopped_in;  // the phase (summary.json's name) during which it stopped
+  // The first phase after the search that a stop of the whole run cut (empty: they all ran
+  // whole, as after a spent max-boxes budget or a first Ctrl-C, which stop the search only).
+  std::string run_stopped_in;
   bool complete() const { return stopped_by == StopReason::None; }
   double seconds = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;  // wall time per phase

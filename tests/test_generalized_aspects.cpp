@@ -5,7 +5,11 @@
 
 #include <mpfr.h>
 
+#include <chrono>
 #include <numeric>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "generalized_aspects.h"
 #include "pipeline/remote_subtrees.h"
@@ -220,6 +224,35 @@ TEST(GeneralizedAspects, RemoteSearchStoppedAndResumedGivesTheSameResult) {
   AspectsResult b = compute_aspects(m3, again);
   ASSERT_TRUE(b.complete());
   expect_same_result(a, b);
+}
+
+TEST(GeneralizedAspects, SlowCheckpointsWaitNineteenTimesTheirLength) {
+  // A checkpoint rewrites the whole state, which grows with the run; checkpoints are on by
+  // default (every 60 s), so each waits at least 19 times as long as the last write took
+  // (proofs/pipeline/search_phase.cpp, Checkpointer), whatever the interval asked: a
+  // write of 40 ms every 1 ms asked. Before, the writes followed one another (every
+  // finished subtree).
+  set_working_precision(53);
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  AspectsConfig cfg;
+  cfg.eps = 0.3;
+  cfg.threads = 1;
+  cfg.checkpoint_seconds = 0.001;
+  using Clock = std::chrono::steady_clock;
+  std::vector<std::pair<Clock::time_point, Clock::time_point>> writes;  // start, end
+  cfg.checkpoint = [&](const SearchState&, const std::vector<uint8_t>&) {
+    const Clock::time_point start = Clock::now();
+    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    writes.push_back({start, Clock::now()});
+  };
+  AspectsResult r = compute_aspects(m, cfg);
+  ASSERT_TRUE(r.complete());
+  ASSERT_GE(writes.size(), 2u) << "the search must outlast a few spaced writes";
+  for (size_t i = 1; i < writes.size(); ++i) {
+    const double took = std::chrono::duration<double>(writes[i - 1].second - writes[i - 1].first).count();
+    const double waited = std::chrono::duration<double>(writes[i].first - writes[i - 1].second).count();
+    EXPECT_GE(waited, 19 * took) << "write " << i;
+  }
 }
 
 TEST(GeneralizedAspects, SpanningLinksGiveTheSameCsncsAsAllLinks) {

@@ -24,6 +24,7 @@
 #include "pose.h"
 #include "query_command.h"
 #include "result_index.h"
+#include "same_command.h"
 #include "sha256.h"
 #include "test_util.h"
 
@@ -143,6 +144,85 @@ TEST(QueryPath, QueryEnclosesTheMpfrRootInEveryBox) {
     }
     EXPECT_TRUE(std::is_sorted(csncs.begin(), csncs.end()));
   }
+}
+
+// Issue 50, item 10: a pose on a face shared by solution boxes had its command listed once
+// per box ("7 certified command(s)" where 4 were distinct). Poses on the upper x1 face of
+// solution boxes: the answers are the distinct MPFR roots, each once; every box merged into
+// an answer holds the pose and, by its own certified command, the same root. Before the
+// merge, 125 of these poses had a root listed twice or more.
+TEST(QueryPath, EachSolutionOfAPoseOnSharedFacesIsListedOnce) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  HsWorkspace ws;
+  int poses = 0, merged = 0;
+  for (size_t i = 0; i < r.index.solutions.size(); i += 53) {
+    const IndexSolutionBox& s = r.index.solutions[i];
+    const std::vector<double> pose = {s.hi[0], 0.5 * s.lo[1] + 0.5 * s.hi[1]};
+    QueryResult q = query_pose(r, ev, pose);
+    if (q.outcome != QueryOutcome::Answered) continue;
+    ++poses;
+    EXPECT_TRUE(q.not_proved_distinct.empty()) << "pose " << pose[0] << "," << pose[1];
+    std::vector<std::vector<R>> roots;  // one per answer
+    for (const QueryAnswer& a : q.answers) {
+      std::vector<R> root;
+      ASSERT_TRUE(mpfr_root(pose, {a.command.lo[0], a.command.lo[1]}, root));
+      for (int j = 0; j < 2; ++j) EXPECT_TRUE(encloses(a.command.lo[j], a.command.hi[j], root[j]));
+      // Each box merged here certifies, on its own, a command enclosing the same root.
+      ASSERT_EQ(a.same_boxes.size(), a.same_csncs.size());
+      merged += !a.same_boxes.empty();
+      for (uint32_t id : a.same_boxes) {
+        const auto at = std::find_if(r.index.solutions.begin(), r.index.solutions.end(),
+                                     [&](const IndexSolutionBox& b) { return b.id == id; });
+        ASSERT_NE(at, r.index.solutions.end());
+        EXPECT_EQ(pose_in_box(r.model, pose, at->lo.data(), at->hi.data()), Membership::Inside);
+        PointCommand own = certified_command(ev, at->lo.data(), at->hi.data(), pose, r.index.tau, ws);
+        ASSERT_EQ(own.status, PointCommandStatus::Certified);
+        std::vector<R> own_root;
+        ASSERT_TRUE(mpfr_root(pose, {own.lo[0], own.lo[1]}, own_root));
+        for (int j = 0; j < 2; ++j)  // the same angle (the commands are periodic)
+          EXPECT_LT(abs(sin((own_root[j] - root[j]) / R(2))).d(), 1e-60) << "box " << id;
+      }
+      // No two answers are one root.
+      for (const std::vector<R>& other : roots)
+        EXPECT_GT(std::max(abs(sin((other[0] - root[0]) / R(2))).d(),
+                           abs(sin((other[1] - root[1]) / R(2))).d()), 1e-9)
+            << "pose " << pose[0] << "," << pose[1] << ": a root listed twice";
+      roots.push_back(root);
+    }
+  }
+  EXPECT_GT(poses, 20);
+  EXPECT_GT(merged, 0) << "no pose on a shared face: the test shows nothing";
+}
+
+// same_command (apps/same_command.h) on one pose of RRRRR: a command and itself shifted by a
+// whole turn are one (q1, q2 periodic); two different roots are distinct; an enclosure
+// holding two roots proves neither.
+TEST(QueryPath, SameCommandProvesOneTwoOrNeither) {
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  HsWorkspace ws;
+  const std::vector<double> pose = {3, 5};
+  QueryResult q = query_pose(r, ev, pose);
+  ASSERT_EQ(q.outcome, QueryOutcome::Answered);
+  ASSERT_GE(q.answers.size(), 2u);
+  const PointCommand& a = q.answers[0].command;
+  const PointCommand& b = q.answers[1].command;
+  const double tau = r.index.tau;
+  EXPECT_EQ(same_command(ev, pose, a, a, tau, ws), SameCommand::Same);
+  EXPECT_EQ(same_command(ev, pose, a, b, tau, ws), SameCommand::Distinct);
+  PointCommand turned = a;  // a - 2π, rounded outward
+  for (int j = 0; j < 2; ++j) {
+    turned.lo[j] = (R(a.lo[j]) - R(2) * R::pi()).d() - 1e-14;
+    turned.hi[j] = (R(a.hi[j]) - R(2) * R::pi()).d() + 1e-14;
+  }
+  EXPECT_EQ(same_command(ev, pose, a, turned, tau, ws), SameCommand::Same);
+  PointCommand both = a;  // the hull of both roots: two solutions in it, no uniqueness
+  for (int j = 0; j < 2; ++j) {
+    both.lo[j] = std::min(a.lo[j], b.lo[j]);
+    both.hi[j] = std::max(a.hi[j], b.hi[j]);
+  }
+  EXPECT_EQ(same_command(ev, pose, a, both, tau, ws), SameCommand::Unknown);
 }
 
 TEST(PoseMembership, FacesAndWholeTurnsAreDecidedAsMpfrDecides) {

@@ -59,7 +59,11 @@ struct AspectsConfig {
   // on the calling thread.
   std::function<void(const std::string& phase, double seconds)> phase_done;
 
+  // The phases after the search ask this one: the whole run stops (search/stop_condition.h).
   bool stopped() const { return stop && stop->poll(); }
+  // The search asks this one between units that are not boxes: a first interrupt or a
+  // spent box budget stops the search alone.
+  bool search_stopped() const { return stop && stop->search_stopped(); }
 };
 
 }  // namespace aspects

@@ -1,5 +1,6 @@
 #include "search_phase.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <memory>
@@ -56,9 +57,14 @@ bool search_part(const Model& m, const AspectsConfig& c, const std::vector<Facto
 
 // Checkpoints while the subtrees are searched: `done` changes under `state_lock`; the
 // callback gets a copy, and reads only finished parts, which no thread changes any more.
+// Each write rewrites the whole state, which grows with the run: the next periodic one
+// waits at least 19 times as long as the last took, so that writing them holds a thread
+// for at most a twentieth of the time (a default interval of a minute must not cost a
+// run of hours, whose checkpoint is gigabytes, most of its time).
 class Checkpointer {
  public:
-  Checkpointer(const AspectsConfig& c, SearchState& st) : c_(c), st_(st) {}
+  Checkpointer(const AspectsConfig& c, SearchState& st)
+      : c_(c), st_(st), wait_(c.checkpoint_seconds) {}
   void mark_done(size_t k) {
     std::lock_guard<std::mutex> g(state_lock_);
     st_.done[k] = 1;
@@ -73,14 +79,15 @@ class Checkpointer {
     {
       std::lock_guard<std::mutex> g(state_lock_);
       auto now = std::chrono::steady_clock::now();
-      if (!forced &&
-          std::chrono::duration<double>(now - last_).count() < c_.checkpoint_seconds)
-        return;
+      if (!forced && std::chrono::duration<double>(now - last_).count() < wait_) return;
       done = st_.done;
     }
+    const auto start = std::chrono::steady_clock::now();
     c_.checkpoint(st_, done);
     std::lock_guard<std::mutex> g(state_lock_);
     last_ = std::chrono::steady_clock::now();
+    wait_ = std::max(c_.checkpoint_seconds,
+                     kWaitPerWrite * std::chrono::duration<double>(last_ - start).count());
   }
 
  private:
@@ -88,6 +95,8 @@ class Checkpointer {
   SearchState& st_;
   std::mutex state_lock_, write_lock_;
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+  static constexpr double kWaitPerWrite = 19;
+  double wait_;  // seconds from the last write to the next periodic one
 };
 
 // A resumed state must have been made with this model's factors.
@@ -155,7 +164,7 @@ void search_with_remote(const Model& model, const AspectsConfig& config,
   std::thread server([&] {
     try {
       config.remote->serve(
-          queue, st.deferred, int(factors.size()), [&] { return config.stopped(); },
+          queue, st.deferred, int(factors.size()), [&] { return config.search_stopped(); },
           [&](int32_t k, PartOutcome outcome, ReturnedPart&& part, std::string&& records) {
             count_for_progress(part, st.deferred[k].box, stats);
             if (config.subtree_observer.returned)

@@ -20,7 +20,26 @@ from . import _aspects
 from .progress import progress_callback as _progress_callback
 from .result import Result
 
-__all__ = ["Model", "ModelError", "ResultError", "Result", "solve", "load"]
+__all__ = ["Model", "ModelError", "ResultError", "Result", "Interrupted", "solve", "load"]
+
+
+class Interrupted(KeyboardInterrupt):
+    """Raised by solve() after Ctrl-C, once the run has returned: `.result` is the Result
+    it made (result.complete is False when the interrupt cut the search or a later phase;
+    every claim holds either way). A KeyboardInterrupt, so a script that does not catch it
+    stops as on any Ctrl-C:
+
+        try:
+            r = aspects.solve(model, eps=0.01)
+        except aspects.Interrupted as e:
+            r = e.result
+    """
+
+    def __init__(self, result):
+        super().__init__("aspects.solve: interrupted (Ctrl-C); the result so far is this "
+                         "exception's .result (result.complete: %s; every claim holds)"
+                         % result.complete)
+        self.result = result
 
 
 def _number(name, value, kind=float):
@@ -37,8 +56,10 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
 
     threads: 0 is one per core (the result does not depend on it). time_limit (seconds)
     and max_boxes stop the search early: the result is then partial (result.complete is
-    False) and every claim still holds. Ctrl-C does the same: the run stops within a
-    second and the partial result is returned (with a warning). out: a directory, written
+    False) and every claim still holds. Ctrl-C stops the search within a second, and the
+    links, CSNCs, bound and witnesses are finished on the boxes it made (a second Ctrl-C
+    stops them too); then aspects.Interrupted, a KeyboardInterrupt, is raised with the
+    result as its `.result`. out: a directory, written
     as `aspects solve --out` writes it (summary.json, boxes.csv, aspects.cert,
     aspects.idx; certificate=False leaves out the certificate): the files of a run written
     there before are removed first, and the directory is locked while the run writes it
@@ -74,10 +95,7 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
         finish()
     result = Result(core)
     if interrupted:
-        import warnings
-        warnings.warn("aspects.solve: interrupted (Ctrl-C); returning the partial result "
-                      "(result.complete is False; every claim holds)", RuntimeWarning,
-                      stacklevel=2)
+        raise Interrupted(result)
     return result
 
 

@@ -1,7 +1,9 @@
 // aspects._solve: the run of `aspects solve`, on a worker thread with the GIL released.
 // The calling (main) thread polls every 100 ms: it runs Python's signal handlers
-// (PyErr_CheckSignals), so Ctrl-C asks the run's StopCondition to stop, as SIGINT does on
-// the command line, and the run returns a partial result whose claims all hold; it also
+// (PyErr_CheckSignals), so that Ctrl-C interrupts the run's StopCondition as SIGINT does on
+// the command line (the first stops the search and lets the phases after it finish on
+// what was searched, the second stops them too), and the run returns a result whose
+// claims all hold (aspects.solve then raises aspects.Interrupted carrying it); it also
 // hands the search's progress to the Python callback. With `out`, the same files as
 // `aspects solve --out` are written by the same writers (apps/solve_outputs.h).
 #include <pybind11/functional.h>
@@ -92,9 +94,16 @@ pyb::dict progress_dict(Progress& p, double seconds) {
   return d;
 }
 
+const char* const kFirstInterrupt =
+    "aspects.solve: interrupted: no more boxes are searched; the links, CSNCs, bound and "
+    "witnesses are finished on what was searched (Ctrl-C again to stop at once)\n";
+const char* const kSecondInterrupt =
+    "aspects.solve: interrupted again: stopping now, with what is established so far\n";
+
 // Runs `work` on a worker thread while this thread, holding the GIL between waits, runs
-// signal handlers and the progress callback. A KeyboardInterrupt or an exception of the
-// callback asks `stop` to stop; the callback's exception is raised once the run ended.
+// signal handlers and the progress callback. A KeyboardInterrupt interrupts `stop` (the
+// first the search, the second the whole run); an exception of another handler or of the
+// callback stops the whole run, and is raised once the run ended.
 void run_polling(const std::function<void()>& work, StopCondition& stop, Progress& progress,
                  const pyb::object& callback, bool& interrupted) {
   std::mutex mu;
@@ -103,6 +112,13 @@ void run_polling(const std::function<void()>& work, StopCondition& stop, Progres
   std::exception_ptr failure;
   std::unique_ptr<pyb::error_already_set> callback_error;
   const auto start = std::chrono::steady_clock::now();
+  // Ctrl-C, seen by the signal check or raised inside the callback (tqdm's, say): the
+  // interrupt a SIGINT is on the command line, never the callback's failure.
+  auto on_interrupt = [&] {
+    interrupted = true;
+    const StopScope scope = stop.interrupt();
+    PySys_WriteStderr("%s", scope == StopScope::Search ? kFirstInterrupt : kSecondInterrupt);
+  };
   {
     pyb::gil_scoped_release release;
     std::thread worker([&] {
@@ -122,23 +138,27 @@ void run_polling(const std::function<void()>& work, StopCondition& stop, Progres
       }
       pyb::gil_scoped_acquire acquire;
       if (PyErr_CheckSignals() != 0) {
-        // Only KeyboardInterrupt is swallowed: it becomes the stop a SIGINT is on the
+        // Only KeyboardInterrupt is swallowed: it becomes the interrupt a SIGINT is on the
         // command line. Another handler's exception stops the run and is raised after.
         if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
           PyErr_Clear();
-          interrupted = true;
-        } else if (!callback_error) {
-          callback_error = std::make_unique<pyb::error_already_set>();
+          on_interrupt();
+        } else {
+          if (!callback_error) callback_error = std::make_unique<pyb::error_already_set>();
+          stop.request(StopReason::Signal);
         }
-        stop.request(StopReason::Signal);
       }
       if (!callback.is_none() && !callback_error && progress.changed) {
         double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         try {
           callback(progress_dict(progress, t));
         } catch (pyb::error_already_set& e) {
-          callback_error = std::make_unique<pyb::error_already_set>(std::move(e));
-          stop.request(StopReason::Signal);
+          if (e.matches(PyExc_KeyboardInterrupt)) {
+            on_interrupt();
+          } else {
+            callback_error = std::make_unique<pyb::error_already_set>(std::move(e));
+            stop.request(StopReason::Signal);
+          }
         }
       }
     }
@@ -147,7 +167,12 @@ void run_polling(const std::function<void()>& work, StopCondition& stop, Progres
   // The last state, so that even a run shorter than one poll reports its end.
   if (!callback.is_none() && !callback_error && progress.changed && !failure) {
     double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    callback(progress_dict(progress, t));
+    try {
+      callback(progress_dict(progress, t));
+    } catch (pyb::error_already_set& e) {
+      if (!e.matches(PyExc_KeyboardInterrupt)) throw;
+      on_interrupt();  // the run is over: nothing left to stop, but it was interrupted
+    }
   }
   if (callback_error) throw std::move(*callback_error);
   if (failure) std::rethrow_exception(failure);

@@ -15,7 +15,6 @@ import signal
 import subprocess
 import threading
 import time
-import warnings
 
 import numpy as np
 import pytest
@@ -300,7 +299,10 @@ def test_progress_true_without_tqdm_prints_lines(monkeypatch, capsys):
     assert err.startswith("[aspects] ") and "[aspects] done: 95 boxes, 36 solution" in err
 
 
-def test_sigint_stops_within_a_second():
+def test_sigint_stops_the_search_and_raises_interrupted_with_the_result(capsys):
+    # Ctrl-C (issue 50, item 9): the search stops within a second, the links and CSNCs are
+    # made on the boxes it made, and aspects.Interrupted (a KeyboardInterrupt) carries the
+    # result. Before: a warning, and a result without a link.
     model = aspects.Model.default()
     fired = []
 
@@ -309,13 +311,44 @@ def test_sigint_stops_within_a_second():
         fired.append(time.monotonic())
         os.kill(os.getpid(), signal.SIGINT)
     threading.Thread(target=interrupt).start()
-    with warnings.catch_warnings(record=True) as w:
-        warnings.simplefilter("always")
-        r = aspects.solve(model, eps=0.02, threads=1)
-    assert fired and time.monotonic() - fired[0] < 1.0
+    with pytest.raises(aspects.Interrupted) as caught:
+        aspects.solve(model, eps=0.02, threads=1)
+    assert isinstance(caught.value, KeyboardInterrupt)
+    r = caught.value.result
+    assert fired and time.monotonic() - fired[0] < 5.0
     assert not r.complete and r.stopped_by == "signal"
-    assert r.summary["boxes"]["unexplored"] > 0
-    assert any("interrupted" in str(x.message) for x in w)
+    s = r.summary
+    assert s["boxes"]["unexplored"] > 0 and s["boxes"]["solution"] > 0
+    assert s["links"]["certified"] > 0
+    assert s["csncs"]["count"] < s["boxes"]["solution"]
+    err = capsys.readouterr().err
+    assert "aspects.solve: interrupted: no more boxes are searched" in err
+    assert "interrupted again" not in err
+
+
+def test_second_sigint_says_it_stops_at_once(capsys):
+    # The second Ctrl-C, once the first was handled (the search is over), stops the phases
+    # after the search (what it cuts depends on when it comes: PhaseStops.ASecondInterrupt*
+    # in C++ shows it) and says so: still Interrupted with the result. A KeyboardInterrupt
+    # raised inside the progress callback is such a Ctrl-C, not the callback's failure.
+    model = aspects.Model.default()
+    sent = []
+
+    def progress(d):
+        if not sent and d["processed"] > 0:
+            sent.append(1)
+            os.kill(os.getpid(), signal.SIGINT)
+        elif len(sent) == 1 and d["phases"]:  # the first was seen: the search has ended
+            sent.append(2)
+            os.kill(os.getpid(), signal.SIGINT)
+    with pytest.raises(aspects.Interrupted) as caught:
+        aspects.solve(model, eps=0.02, threads=1, progress=progress)
+    r = caught.value.result
+    assert len(sent) == 2
+    assert not r.complete and r.stopped_by == "signal"
+    err = capsys.readouterr().err
+    assert "interrupted: no more boxes are searched" in err
+    assert "aspects.solve: interrupted again: stopping now" in err
 
 
 # ------------------------------------------------------------------------------ bad input
