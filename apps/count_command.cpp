@@ -49,7 +49,12 @@ int run_count(const CountOptions& o) {
   StopCondition stop;
   if (o.time_limit > 0) stop.set_time_limit(o.time_limit);
   stop.set_watch_signals(true);
-  watch_stop_signals();
+  StopSignalNotes notes;
+  notes.first_interrupt =
+      "\naspects: interrupted: the count stops refining and prints the certified bounds reached "
+      "(Ctrl-C again to stop at once)\n";
+  notes.second_interrupt = "\naspects: interrupted again: stopping now\n";
+  watch_stop_signals(notes);
   CountConfig cfg;
   cfg.eps = o.eps;
   cfg.min_width = o.min_width;

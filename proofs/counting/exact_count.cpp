@@ -177,7 +177,11 @@ class Counter {
   }
 
  private:
-  bool stopped() const { return config_.stop && config_.stop->poll(); }
+  // Any stop ends the refinement, a first Ctrl-C too (it stops only a solve's search): the
+  // bounds reached are printed.
+  bool stopped() const {
+    return config_.stop && (config_.stop->search_stopped() || config_.stop->poll());
+  }
 
   long alive_cells() const {
     long n = 0;
