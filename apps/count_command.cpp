@@ -88,6 +88,9 @@ int run_count(const CountOptions& o) {
     j["stop"] = count_stop_name(r.stop);
     j["open_pieces"] = b.open_pieces;
     j["open_adjacencies"] = b.open_adjacencies;
+    j["open_pieces_by_reason"] = {{"no_chart", r.open_by_reason[int(OpenReason::NoChart)]},
+                                  {"no_point", r.open_by_reason[int(OpenReason::NoPoint)]},
+                                  {"not_star", r.open_by_reason[int(OpenReason::NotStar)]}};
     j["first_cover"] = {{"eps", o.eps}, {"boxes", r.first_cover_boxes},
                         {"separated_lower_bound", r.separation_bound}};
     j["boxes"] = r.cells;
@@ -114,7 +117,10 @@ int run_count(const CountOptions& o) {
     for (const std::string& f : r.factor_text) std::cout << "  " << f;
     std::cout << '\n';
     if (!b.exact()) {
-      std::cout << "the gap is held by " << b.open_pieces << " piece(s) not proved connected and "
+      std::cout << "the gap is held by " << b.open_pieces << " piece(s) not proved connected ("
+                << r.open_by_reason[int(OpenReason::NoChart)] << " with no chart, "
+                << r.open_by_reason[int(OpenReason::NoPoint)] << " with no certified point, "
+                << r.open_by_reason[int(OpenReason::NotStar)] << " whose star test failed) and "
                 << b.open_adjacencies << " undecided adjacency(ies) between components; stopped: "
                 << count_stop_name(r.stop) << '\n';
       for (const OpenPlace& pl : r.open)

@@ -534,10 +534,12 @@ class Counter {
       }
       out.open.push_back(std::move(place));
     };
+    std::fill(std::begin(out.open_by_reason), std::end(out.open_by_reason), 0);
     for (size_t c = 0; c < cells_.size(); ++c) {
       if (!cells_[c].alive) continue;
       for (const PieceRec& r : cells_[c].pieces)
         if (r.state == PieceState::Undecided || r.state == PieceState::Nonempty) {
+          ++out.open_by_reason[int(r.why)];
           if (!mark[c]) note(r.why, r.cls, int32_t(c));
           mark[c] = 1;
         }
@@ -547,6 +549,7 @@ class Counter {
       const int32_t x = g.end_a(r.edge), y = g.end_b(r.edge);
       if (hc[x] == hc[y]) continue;
       const Adj& e = adj_[r.adj];
+      ++out.open_by_reason[int(OpenReason::Adjacency)];
       if (!mark[e.a]) note(OpenReason::Adjacency, e.classes[r.klass].cls, e.a);
       mark[e.a] = mark[e.b] = 1;
     }

@@ -63,6 +63,7 @@ struct CountResult {
   long first_cover_boxes = 0, cells = 0, pieces = 0, adjacencies = 0;
   long bisections = 0, star_boxes = 0;
   std::vector<OpenPlace> open;  // at most a few, the first found
+  long open_by_reason[4] = {0, 0, 0, 0};  // open pieces (and adjacencies) by OpenReason
   std::vector<std::string> factor_text;
   double seconds = 0;
 };
