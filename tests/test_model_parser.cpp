@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "model/determinant_factors.h"
 #include "model/model.h"
 #include "test_util.h"
 
@@ -445,6 +446,11 @@ TEST_F(ParserTest, SharedSumsOfAPeriodicVariableAreCheckedOnce) {
          std::to_string(i - 1) + "\n";
   Model m = parse_model(t + "equation x - 2*a60 = 0\n", "shared.robot");
   EXPECT_TRUE(m.vars[1].periodic);
+  // Its Jacobian's text (summary.json, aspects.idx) is as long: cut, not written in 2^60 steps.
+  const std::vector<Factor> factors = determinant_factors(m);
+  ASSERT_EQ(factors.size(), 2u);
+  EXPECT_EQ(factors[1].text.size(), Dag::kMaxTextLength + 4);
+  EXPECT_EQ(factors[1].text.substr(factors[1].text.size() - 4), " ...");
   t += "let b = a60 + q\nequation x - 2*b = 0\n";
   try {
     parse_model(t, "shared.robot");

@@ -219,10 +219,30 @@ int precedence(const Node& n) {
 }  // namespace
 
 std::string Dag::to_string(int id, const std::vector<std::string>& names) const {
+  std::string out;
+  write(id, names, out);
+  if (out.size() > kMaxTextLength) {
+    out.resize(kMaxTextLength);
+    out += " ...";
+  }
+  return out;
+}
+
+// Appends node `id` to `out`, and stops expanding once out is longer than the limit: a DAG
+// with shared nodes (a_i = a_{i-1} + a_{i-1}) has a text exponentially longer than itself.
+void Dag::write(int id, const std::vector<std::string>& names, std::string& out) const {
+  if (out.size() > kMaxTextLength) return;
   const Node& n = nodes_[id];
   auto sub = [&](int c, int min_prec) {
-    std::string s = to_string(c, names);
-    return precedence(nodes_[c]) < min_prec ? "(" + s + ")" : s;
+    const bool parens = precedence(nodes_[c]) < min_prec;
+    if (parens) out += '(';
+    write(c, names, out);
+    if (parens) out += ')';
+  };
+  auto binary = [&](int left_prec, const char* op, int right_prec) {
+    sub(n.a, left_prec);
+    out += op;
+    sub(n.b, right_prec);
   };
   switch (n.op) {
     case Op::Const: {
@@ -233,22 +253,40 @@ std::string Dag::to_string(int id, const std::vector<std::string>& names) const 
         std::snprintf(buf, sizeof buf, "%.17g", lo);
       else
         std::snprintf(buf, sizeof buf, "[%.17g, %.17g]", lo, hi);
-      return buf;
+      out += buf;
+      return;
     }
-    case Op::Var: return names.at(n.k);
-    case Op::Add: return sub(n.a, 1) + " + " + sub(n.b, 1);
-    case Op::Sub: return sub(n.a, 1) + " - " + sub(n.b, 2);
-    case Op::Mul: return sub(n.a, 2) + "*" + sub(n.b, 3);
-    case Op::Div: return sub(n.a, 2) + "/" + sub(n.b, 3);
-    case Op::Neg: return "-" + sub(n.a, 3);
-    case Op::Sqr: return sub(n.a, 5) + "^2";
-    case Op::Pow: return sub(n.a, 5) + "^" + std::to_string(n.k);
+    case Op::Var: out += names.at(n.k); return;
+    case Op::Add: binary(1, " + ", 1); return;
+    case Op::Sub: binary(1, " - ", 2); return;
+    case Op::Mul: binary(2, "*", 3); return;
+    case Op::Div: binary(2, "/", 3); return;
+    case Op::Neg:
+      out += '-';
+      sub(n.a, 3);
+      return;
+    case Op::Sqr:
+      sub(n.a, 5);
+      out += "^2";
+      return;
+    case Op::Pow:
+      sub(n.a, 5);
+      out += "^" + std::to_string(n.k);
+      return;
     case Op::Min:
     case Op::Max:
     case Op::Step:
-      return std::string(op_name(n.op)) + "(" + to_string(n.a, names) + ", " +
-             to_string(n.b, names) + ")";
-    default: return std::string(op_name(n.op)) + "(" + to_string(n.a, names) + ")";
+      out += std::string(op_name(n.op)) + "(";
+      write(n.a, names, out);
+      out += ", ";
+      write(n.b, names, out);
+      out += ')';
+      return;
+    default:
+      out += std::string(op_name(n.op)) + "(";
+      write(n.a, names, out);
+      out += ')';
+      return;
   }
 }
 
