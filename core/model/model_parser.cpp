@@ -586,13 +586,13 @@ class Parser {
     std::vector<size_t> open;
     for (size_t i = 0; i < toks_.size(); ++i) {
       const Token& t = toks_[i];
-      const bool logic = (t.kind == Tok::Punct && (t.text == ">=" || t.text == "<=" ||
-                                                   t.text == ">" || t.text == "<")) ||
+      // A punctuation token starting with '<' or '>' is a comparison (<, <=, >, >=).
+      const char c = t.kind == Tok::Punct ? t.text[0] : 0;
+      const bool logic = c == '<' || c == '>' ||
                          (t.kind == Tok::Ident && (t.text == "and" || t.text == "or"));
       logic_before_[i + 1] = logic_before_[i] + (logic ? 1 : 0);
-      if (t.kind != Tok::Punct) continue;
-      if (t.text == "(") open.push_back(i);
-      if (t.text == ")" && !open.empty()) {
+      if (c == '(') open.push_back(i);
+      if (c == ')' && !open.empty()) {
         group_end_[open.back()] = i;
         open.pop_back();
       }
