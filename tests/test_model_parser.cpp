@@ -418,6 +418,17 @@ TEST_F(ParserTest, PeriodicDomainFarFromZeroIsAccepted) {
       "far.robot");
   EXPECT_TRUE(m.vars[1].periodic);
   EXPECT_LT(m.vars[1].domain.width_up(), 2 * M_PI + 1e-9);
+  // At `solve --prec 24` the enclosure of pi + 1e5 is 2^-7 wide: the allowance grows as
+  // the precision falls (2^(20-p) of a period below 40 bits).
+  for (long prec : {24L, 30L, 200L}) {
+    set_working_precision(prec);
+    Model low = parse_model(
+        "robot T\npose x in [-1, 1]\ncommand q in [-pi + 1e5, pi + 1e5] periodic\n"
+        "equation x - sin(q) = 0\n",
+        "far.robot");
+    EXPECT_TRUE(low.vars[1].periodic) << prec;
+  }
+  set_working_precision(53);
 }
 
 // k12 - k12 without `periodic`: a finite domain as wide as its enclosure (1e158), kept as

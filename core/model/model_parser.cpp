@@ -316,7 +316,7 @@ class Parser {
       // Exact bounds may still have wide enclosures (k - k with a huge k is [-huge, huge]):
       // the root box would be many periods wide.
       const double width = v.domain.width_up();
-      if (!(width <= kMaxPeriodWidth)) {
+      if (!(width <= max_period_width())) {
         char shown[32];
         std::snprintf(shown, sizeof shown, "%.17g", width);
         fail(open, "periodic domain of '" + name.text + "' evaluates to an enclosure of width " +
@@ -607,8 +607,12 @@ class Parser {
     int line;
   };
   static constexpr int kMaxNesting = 200, kMaxDepth = 1000, kMaxVariables = 16;
-  // One period and a millionth of it: rounding of sensible bounds stays far below.
-  static constexpr double kMaxPeriodWidth = 2 * M_PI * (1 + 0x1p-20);
+  // One period and 2^-20 of it, or 2^(20 - p) of it at a working precision of p < 40 bits:
+  // the rounding of sensible bounds (up to 1e5 or so at 24 bits) stays far below.
+  static double max_period_width() {
+    const long excess_bits = std::min(20L, working_precision() - 20);
+    return 2 * M_PI * (1 + std::ldexp(1.0, -int(excess_bits)));
+  }
   int nesting_ = 0;
   std::vector<Token> toks_;
   size_t p_ = 0;
