@@ -409,6 +409,35 @@ std::vector<ErrorCase> error_cases() {
   };
 }
 
+// The DAG keys a constant by the exact bytes of its ends (once their hex text): equal
+// enclosures share a node, whatever their precision; any difference in value does not.
+TEST_F(ParserTest, ConstantsShareANodeExactlyWhenTheirEnclosuresAreEqual) {
+  Dag dag;
+  Interval tenth, tenth_again, third;
+  ASSERT_TRUE(Interval::from_string(tenth, "0.1"));
+  ASSERT_TRUE(Interval::from_string(tenth_again, "0.10"));
+  ASSERT_TRUE(Interval::from_string(third, "0.3333333333333333"));
+  const int a = dag.constant(tenth);
+  EXPECT_EQ(dag.constant(tenth_again), a);
+  EXPECT_NE(dag.constant(Interval(0.1)), a);  // the double 0.1: one end of the enclosure
+  EXPECT_NE(dag.constant(third), a);
+  EXPECT_EQ(dag.constant(0.0), dag.zero());
+  EXPECT_EQ(dag.constant(-0.0), dag.zero());  // MPFI encloses both as [+0, -0]
+  EXPECT_NE(dag.constant(Interval(-1.0)), dag.one());
+  EXPECT_NE(dag.constant(Interval(0x1p-1074)), dag.constant(Interval(0x1p-1073)));
+  EXPECT_NE(dag.constant(Interval(1.0, 1.0 + 0x1p-52)), dag.one());
+  set_working_precision(200);
+  Interval tenth_200;
+  ASSERT_TRUE(Interval::from_string(tenth_200, "0.1"));
+  EXPECT_NE(dag.constant(tenth_200), a);
+  EXPECT_EQ(dag.constant(1.0), dag.one());  // equal value, other precision: shared
+  Interval near_one;  // 1 + 1e-40: differs from 1 in a low limb only
+  ASSERT_TRUE(Interval::from_string(near_one, "1.0000000000000000000000000000000000000001"));
+  EXPECT_NE(dag.constant(near_one), dag.one());
+  set_working_precision(53);
+  EXPECT_EQ(dag.constant(1.0), dag.one());
+}
+
 // Periodic bounds exact and evaluated closely, far from zero: rounding widens the root
 // box by ulps of 1e6, far below the millionth of a period the parser allows.
 TEST_F(ParserTest, PeriodicDomainFarFromZeroIsAccepted) {

@@ -67,17 +67,37 @@ int Dag::add_node(Node n) {
   return id;
 }
 
-int Dag::constant(const Interval& v) {
-  // Identical enclosures share a node; the key is the exact endpoints in hex, at
-  // full length (a truncated key could merge two different constants).
-  auto exact = [](mpfr_srcptr x) {
-    char* s = nullptr;
-    mpfr_asprintf(&s, "%Ra", x);
-    std::string out(s);
-    mpfr_free_str(s);
-    return out;
+namespace {
+
+// Appends the exact value of x as bytes: its kind (with the sign), and for a regular number
+// its exponent and significand limbs, the low zero limbs left out so that equal values at
+// different precisions have one key. Equal keys are equal values. (It was the text "%Ra"
+// of each end: a third of the parse of a long expression went there.)
+void append_exact(std::string& key, mpfr_srcptr x) {
+  auto raw = [&key](const void* p, size_t bytes) {
+    key.append(static_cast<const char*>(p), bytes);
   };
-  auto key = std::make_pair(exact(&v.get()->left), exact(&v.get()->right));
+  const mpfr_ptr y = const_cast<mpfr_ptr>(x);  // the custom interface only reads here
+  const int kind = mpfr_custom_get_kind(y);
+  raw(&kind, sizeof kind);
+  if (kind != MPFR_REGULAR_KIND && kind != -MPFR_REGULAR_KIND) return;
+  const mpfr_exp_t exp = mpfr_custom_get_exp(y);
+  raw(&exp, sizeof exp);
+  // Limbs from the least significant (index 0) to the most; unused low bits are zero.
+  const mp_limb_t* limbs = static_cast<const mp_limb_t*>(mpfr_custom_get_significand(y));
+  size_t n = mpfr_custom_get_size(mpfr_get_prec(x)) / sizeof(mp_limb_t), low = 0;
+  while (low < n && limbs[low] == 0) ++low;
+  raw(limbs + low, (n - low) * sizeof(mp_limb_t));
+}
+
+}  // namespace
+
+int Dag::constant(const Interval& v) {
+  // Identical enclosures share a node; the key is the exact endpoints, at full length (a
+  // truncated key could merge two different constants).
+  std::string key;
+  append_exact(key, &v.get()->left);
+  append_exact(key, &v.get()->right);
   auto it = const_index_.find(key);
   if (it != const_index_.end()) return it->second;
   consts_.push_back(v);

@@ -77,7 +77,7 @@ class Dag {
   std::vector<bool> depends_;
   std::vector<int> depth_;
   std::map<std::tuple<int, int, int, int>, int> index_;
-  std::map<std::pair<std::string, std::string>, int> const_index_;
+  std::map<std::string, int> const_index_;  // both ends' exact bytes -> node
   std::map<std::pair<int, int>, int> deriv_memo_;
   std::vector<std::vector<int>> var_deps_;  // sorted variable list per node
   int zero_ = -1, one_ = -1;
