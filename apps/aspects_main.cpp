@@ -12,6 +12,7 @@
 #include "model/model.h"
 #include "model/model_info.h"
 #include "mpi_launcher.h"
+#include "number_text.h"
 #include "path_command.h"
 #include "plot_command.h"
 #include "query_command.h"
@@ -44,6 +45,15 @@ struct Commands {
   VerifyOptions verify_options;
 };
 
+// The numeric options are read as a pose's numbers are (apps/number_text.h): a subnormal is
+// kept; inf, nan and overflow are refused, naming the option (CLI11 prefixes its name).
+const CLI::Validator kFiniteNumber(
+    [](std::string& text) {
+      double x = 0;
+      return number_problem(parse_number(text, x), text);
+    },
+    "");
+
 void add_info(CLI::App& app, Commands& c) {
   c.info = app.add_subcommand("info",
                               "Print a robot model: variables, equations, Jacobian patterns");
@@ -55,9 +65,11 @@ void add_solve(CLI::App& app, Commands& c) {
   auto* solve = c.solve =
       app.add_subcommand("solve", "Compute certified CSNCs and the lower bound on aspects");
   solve->add_option("MODEL", so.model_path, "robot model file; default: the embedded RRRRR five-bar");
-  solve->add_option("--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1);
+  solve->add_option("--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1)
+      ->check(kFiniteNumber);
   solve->add_option("--prec", so.prec, "MPFI precision in bits (>= 24)")->default_val(53);
-  solve->add_option("--tau", so.tau, "inflation factor of the Hansen-Sengupta iteration (>= 1)")->default_val(1.01);
+  solve->add_option("--tau", so.tau, "inflation factor of the Hansen-Sengupta iteration (>= 1)")->default_val(1.01)
+      ->check(kFiniteNumber);
   solve->add_option("--out", so.out_dir, "write summary.json, boxes.csv and aspects.cert here");
   solve->add_option("--threads", so.threads, "worker threads (0: one per core); results do not depend on it")
       ->default_val(0);
@@ -88,16 +100,19 @@ void add_solve(CLI::App& app, Commands& c) {
       ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}))
       ->default_val("round-robin");
   solve->add_option("--time-limit", so.time_limit,
-                    "stop the search after SECONDS and write a partial result (exit 3)");
+                    "stop the search after SECONDS and write a partial result (exit 3)")
+      ->check(kFiniteNumber);
   solve->add_option("--max-boxes", so.max_boxes,
                     "stop the search after N processed boxes and write a partial result (exit 3; "
                     "not with mpirun -n P, P > 1)");
   solve->add_option("--memory-limit", so.memory_limit,
                     "stop the search before the process (under mpirun: rank 0) needs more than "
-                    "GiB of memory (exit 3)");
+                    "GiB of memory (exit 3)")
+      ->check(kFiniteNumber);
   solve->add_option("--checkpoint", so.checkpoint,
                     "every SECONDS and when stopped, save a resumable state in the --out "
-                    "directory (default with --out: 60, and when stopped; 0: none)");
+                    "directory (default with --out: 60, and when stopped; 0: none)")
+      ->check(kFiniteNumber);
   solve->add_option("--resume", so.resume_dir,
                     "continue the stopped run of DIR from its checkpoint (same outputs as an "
                     "uninterrupted run)");
@@ -155,12 +170,15 @@ void add_count(CLI::App& app, Commands& c) {
       "count", "Certified number of aspects (lower = upper), or certified bounds on it");
   count->add_option("MODEL", co.model_path, "robot model file; default: the embedded RRRRR five-bar");
   count->add_option("--eps", co.eps, "epsilon of the first cover (refinement is adaptive after it)")
+      ->check(kFiniteNumber)
       ->default_val(0.5);
   count->add_option("--min-width", co.min_width,
                     "do not bisect boxes narrower than this fraction of the domain")
+      ->check(kFiniteNumber)
       ->default_val(1e-4);
   count->add_option("--time-limit", co.time_limit,
-                    "stop after SECONDS and print the bounds reached (exit 3)");
+                    "stop after SECONDS and print the bounds reached (exit 3)")
+      ->check(kFiniteNumber);
   count->add_option("--threads", co.threads, "threads of the first cover's search (0: one per core)")
       ->default_val(0);
   count->add_flag("--json", co.json, "print one JSON object");

@@ -1,10 +1,9 @@
 #include "pose.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
+#include "number_text.h"
 #include "solve_command.h"
 
 namespace aspects {
@@ -28,13 +27,10 @@ std::vector<double> parse_pose(const std::string& text, const std::string& optio
   while (true) {
     size_t comma = text.find(',', start);
     std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
-    const char* b = item.c_str();
-    char* end = nullptr;
-    errno = 0;
-    double x = std::strtod(b, &end);
-    while (end && (*end == ' ' || *end == '\t')) ++end;
-    if (end == b || *end != '\0' || errno == ERANGE || !std::isfinite(x))
-      throw UsageError(usage + ", got '" + text + "' ('" + item + "' is not a finite number)");
+    double x = 0;
+    const NumberText outcome = parse_number(item, x);
+    if (outcome != NumberText::Finite)
+      throw UsageError(usage + ", got '" + text + "' (" + number_problem(outcome, item) + ")");
     pose.push_back(x);
     if (comma == std::string::npos) break;
     start = comma + 1;

@@ -14,8 +14,8 @@
 
 namespace aspects {
 
-// Parses "X1,X2[,X3]" (decimal numbers, pose order; each pose is the double nearest the
-// decimal). Throws UsageError naming `option` when a number is malformed, the count
+// Parses "X1,X2[,X3]" (numbers as parse_number reads them, pose order; each pose is the
+// double nearest the number, a subnormal included). Throws UsageError naming `option` when a number is malformed, the count
 // differs from the model's pose count, a non-periodic coordinate lies outside its declared
 // domain, or a periodic one is larger than kMaxPeriodicCoordinate in magnitude.
 std::vector<double> parse_pose(const std::string& text, const std::string& option,

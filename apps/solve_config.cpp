@@ -1,6 +1,7 @@
 #include "solve_config.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -25,6 +26,12 @@ constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 constexpr double kReservePerBox = 320;
 // 2^16 subtrees: finer than any job needs (an MPI job of 1,024 processes cuts at 13).
 constexpr int kMaxCutDepth = 16;
+
+// The shortest text that reads back as x: std::to_string prints 1e-310 as 0.000000.
+std::string shown(double x) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
 
 }  // namespace
 
@@ -55,9 +62,9 @@ void validate_scaling_options(const SolveOptions& o) {
 
 void validate_solve_options(const SolveOptions& o) {
   if (!(o.eps > 0) || !std::isfinite(o.eps))
-    throw UsageError("--eps must be a positive number (got " + std::to_string(o.eps) + ")");
+    throw UsageError("--eps must be a positive number (got " + shown(o.eps) + ")");
   if (!(o.tau >= 1) || !std::isfinite(o.tau))
-    throw UsageError("--tau must be >= 1 (got " + std::to_string(o.tau) + ")");
+    throw UsageError("--tau must be >= 1 (got " + shown(o.tau) + ")");
   if (o.prec < 24 || o.prec > 4096)
     throw UsageError("--prec must be between 24 and 4096 bits (got " + std::to_string(o.prec) + ")");
   if (o.threads < 0 || o.threads > 1024)
@@ -65,15 +72,15 @@ void validate_solve_options(const SolveOptions& o) {
   // Sentinels are -1 (the defaults); a value the user gave must make sense.
   if (o.time_limit != -1 && !(o.time_limit > 0 && o.time_limit < 1e9))
     throw UsageError("--time-limit must be a positive number of seconds (got " +
-                     std::to_string(o.time_limit) + ")");
+                     shown(o.time_limit) + ")");
   if (o.max_boxes != -1 && o.max_boxes < 1)
     throw UsageError("--max-boxes must be at least 1 (got " + std::to_string(o.max_boxes) + ")");
   if (o.memory_limit != -1 && !(o.memory_limit > 0 && o.memory_limit < 1e6))
     throw UsageError("--memory-limit must be a positive number of GiB (got " +
-                     std::to_string(o.memory_limit) + ")");
+                     shown(o.memory_limit) + ")");
   if (o.was_given("--checkpoint") && !(o.checkpoint >= 0 && o.checkpoint < 1e9))
     throw UsageError("--checkpoint must be a number of seconds, 0 for no checkpoint (got " +
-                     std::to_string(o.checkpoint) + ")");
+                     shown(o.checkpoint) + ")");
   validate_scaling_options(o);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "model/determinant_factors.h"
 #include "model/model.h"
 #include "test_util.h"
 
@@ -260,9 +261,60 @@ std::string eighteen_variables() {
   return t;
 }
 
+// k0 = 1.1 and k_i = k_{i-1}^2 up to k_n (k16 is about 1e2712, MPFR's range but not a
+// double's; k12 about 1e169), then a periodic domain whose bounds are exact but evaluate
+// to [-k_n, k_n]-wide enclosures (issue 50, item 2). The domain is on line n + 3.
+std::string squared_constants(int n, bool periodic) {
+  std::string t = "robot T\nconstant k0 = 1.1\n";
+  for (int i = 1; i <= n; ++i)
+    t += "constant k" + std::to_string(i) + " = k" + std::to_string(i - 1) + " * k" +
+         std::to_string(i - 1) + "\n";
+  const std::string k = "k" + std::to_string(n);
+  t += "command q in [-pi + " + k + " - " + k + ", pi + " + k + " - " + k + "]" +
+       (periodic ? " periodic" : "") + "\n";
+  return t + "pose x in [-1, 1]\nequation x - sin(q) = 0\n";
+}
+
+// `count` pose declarations: refused at the 17th (line 18), not after reading them all.
+std::string many_variables(int count) {
+  std::string t = "robot T\n";
+  for (int i = 0; i < count; ++i) t += "pose x" + std::to_string(i) + " in [-1, 1]\n";
+  return t;
+}
+
+// A constraint nested in `depth` parentheses.
+std::string nested_formula(int depth) {
+  return H + "equation x - q = 0\nconstraint " + std::string(size_t(depth), '(') + "x > 0" +
+         std::string(size_t(depth), ')') + "\n";
+}
+
+// let a1 = sin(a0), ..., a_n: a chain deeper than 1000 with no sum for the depth test of
+// the sums to see; differentiating it recursed once per level (a stack overflow at 200,000).
+// a_i (line i + 4) has depth i + 1: a1000 is refused.
+std::string function_chain(int n) {
+  std::string t = H + "let a0 = x\n";
+  for (int i = 1; i <= n; ++i)
+    t += "let a" + std::to_string(i) + " = sin(a" + std::to_string(i - 1) + ")\n";
+  return t + "equation a" + std::to_string(n) + " = q\n";
+}
+
 std::vector<ErrorCase> error_cases() {
   return {
-      {"TooManyVariables", eighteen_variables(), 29, 1, {"18 variables", "at most 16"}},
+      {"TooManyVariables", eighteen_variables(), 18, 9,
+       {"'q7' is variable 17", "at most 16 variables"}},
+      // 6,000 variables took minutes to refuse (issue 50, item 6).
+      {"ThousandsOfVariables", many_variables(6000), 18, 6,
+       {"'x16' is variable 17", "at most 16 variables"}},
+      {"PeriodicBoundBeyondDoubles", squared_constants(16, true), 19, 15,
+       {"domain bound is not a finite number", "range of doubles"}},
+      {"BoundBeyondDoubles", squared_constants(16, false), 19, 15,
+       {"domain bound is not a finite number", "range of doubles"}},
+      {"ProductBeyondDoubles", "robot T\npose x in [-1e308*10, 1]\n", 2, 12,
+       {"domain bound is not a finite number", "range of doubles"}},
+      {"PeriodicEnclosureTooWide", squared_constants(12, true), 15, 14,
+       {"periodic domain of 'q'", "width 1.3", "e+158", "more than one period"}},
+      {"FormulaNestedTooDeeply", nested_formula(201), 5, 212, {"formula nested too deeply"}},
+      {"FunctionChainTooDeep", function_chain(1001), 1004, 13, {"expression too long"}},
       {"UnexpectedToken", H + "equation x + * q = 1\n", 4, 14, {"expected an expression", "'*'"}},
       {"MissingEquals", H + "equation x + q 1\n", 4, 16, {"expected '='", "'1'"}},
       {"UnclosedParen", H + "equation (x + q = 1\n", 4, 17, {"expected ')'", "'='"}},
@@ -355,6 +407,115 @@ std::vector<ErrorCase> error_cases() {
       {"ErrorAfterComment", H + "# a comment line with $ and (\nequation x + r = 0\n", 5, 14,
        {"unknown name", "'r'"}},
   };
+}
+
+// The DAG keys a constant by the exact bytes of its ends (once their hex text): equal
+// enclosures share a node, whatever their precision; any difference in value does not.
+TEST_F(ParserTest, ConstantsShareANodeExactlyWhenTheirEnclosuresAreEqual) {
+  Dag dag;
+  Interval tenth, tenth_again, third;
+  ASSERT_TRUE(Interval::from_string(tenth, "0.1"));
+  ASSERT_TRUE(Interval::from_string(tenth_again, "0.10"));
+  ASSERT_TRUE(Interval::from_string(third, "0.3333333333333333"));
+  const int a = dag.constant(tenth);
+  EXPECT_EQ(dag.constant(tenth_again), a);
+  EXPECT_NE(dag.constant(Interval(0.1)), a);  // the double 0.1: one end of the enclosure
+  EXPECT_NE(dag.constant(third), a);
+  EXPECT_EQ(dag.constant(0.0), dag.zero());
+  EXPECT_EQ(dag.constant(-0.0), dag.zero());  // MPFI encloses both as [+0, -0]
+  EXPECT_NE(dag.constant(Interval(-1.0)), dag.one());
+  EXPECT_NE(dag.constant(Interval(0x1p-1074)), dag.constant(Interval(0x1p-1073)));
+  EXPECT_NE(dag.constant(Interval(1.0, 1.0 + 0x1p-52)), dag.one());
+  set_working_precision(200);
+  Interval tenth_200;
+  ASSERT_TRUE(Interval::from_string(tenth_200, "0.1"));
+  EXPECT_NE(dag.constant(tenth_200), a);
+  EXPECT_EQ(dag.constant(1.0), dag.one());  // equal value, other precision: shared
+  Interval near_one;  // 1 + 1e-40: differs from 1 in a low limb only
+  ASSERT_TRUE(Interval::from_string(near_one, "1.0000000000000000000000000000000000000001"));
+  EXPECT_NE(dag.constant(near_one), dag.one());
+  set_working_precision(53);
+  EXPECT_EQ(dag.constant(1.0), dag.one());
+}
+
+// Periodic bounds exact and evaluated closely, far from zero: rounding widens the root
+// box by ulps of 1e6, far below the millionth of a period the parser allows.
+TEST_F(ParserTest, PeriodicDomainFarFromZeroIsAccepted) {
+  Model m = parse_model(
+      "robot T\npose x in [-1, 1]\ncommand q in [-pi + 1e6 + 0.1, pi + 1000000.1] periodic\n"
+      "equation x - sin(q) = 0\n",
+      "far.robot");
+  EXPECT_TRUE(m.vars[1].periodic);
+  EXPECT_LT(m.vars[1].domain.width_up(), 2 * M_PI + 1e-9);
+  // At `solve --prec 24` the enclosure of pi + 1e5 is 2^-7 wide: the allowance grows as
+  // the precision falls (2^(20-p) of a period below 40 bits).
+  for (long prec : {24L, 30L, 200L}) {
+    set_working_precision(prec);
+    Model low = parse_model(
+        "robot T\npose x in [-1, 1]\ncommand q in [-pi + 1e5, pi + 1e5] periodic\n"
+        "equation x - sin(q) = 0\n",
+        "far.robot");
+    EXPECT_TRUE(low.vars[1].periodic) << prec;
+  }
+  set_working_precision(53);
+}
+
+// k12 - k12 without `periodic`: a finite domain as wide as its enclosure (1e158), kept as
+// the model says (issue 50 refuses only non-finite bounds and over-wide periods).
+TEST_F(ParserTest, WideNonPeriodicDomainIsKept) {
+  Model m = parse_model(squared_constants(12, false), "wide.robot");
+  EXPECT_GT(m.vars[0].domain.width_up(), 1e158);  // q, declared first
+}
+
+// Subnormal literals are numbers (issue 50, item 7): 1e-310 is enclosed, 1e-400 too (in
+// [0, 2^-1074] at 53 bits), and neither is "not finite".
+TEST_F(ParserTest, SubnormalLiteralsAreNumbers) {
+  Model m = parse_model(
+      "robot T\npose x in [-1e-310, 1e-400]\ncommand q in [0, 1]\nequation x - q + 4.9e-324 = 0\n",
+      "tiny.robot");
+  EXPECT_EQ(m.vars[0].domain.lo_down(), -0x0.012688b70e62cp-1022);  // -ceil(1e-310 / 2^-1074) ulps
+  EXPECT_EQ(m.vars[0].domain.hi_up(), 0x1p-1074);
+}
+
+// let a_i = a_{i-1} + a_{i-1}: a DAG of 60 nodes, a tree of 2^60; the test of where a
+// periodic variable appears walked the tree (it never ended), now each node once.
+TEST_F(ParserTest, SharedSumsOfAPeriodicVariableAreCheckedOnce) {
+  std::string t = "robot T\npose x in [-1, 1]\ncommand q in [-pi, pi] periodic\nlet a0 = sin(q)\n";
+  for (int i = 1; i <= 60; ++i)
+    t += "let a" + std::to_string(i) + " = a" + std::to_string(i - 1) + " + a" +
+         std::to_string(i - 1) + "\n";
+  Model m = parse_model(t + "equation x - 2*a60 = 0\n", "shared.robot");
+  EXPECT_TRUE(m.vars[1].periodic);
+  // Its Jacobian's text (summary.json, aspects.idx) is as long: cut, not written in 2^60 steps.
+  const std::vector<Factor> factors = determinant_factors(m);
+  ASSERT_EQ(factors.size(), 2u);
+  EXPECT_EQ(factors[1].text.size(), Dag::kMaxTextLength + 4);
+  EXPECT_EQ(factors[1].text.substr(factors[1].text.size() - 4), " ...");
+  t += "let b = a60 + q\nequation x - 2*b = 0\n";
+  try {
+    parse_model(t, "shared.robot");
+    ADD_FAILURE() << "a bare periodic variable under '*' was accepted";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_NE(e.message().find("found under '*'"), std::string::npos) << e.what();
+  }
+}
+
+// A parenthesised group is a formula when it holds a comparison, 'and' or 'or', an
+// expression otherwise (robots/README.md), at any nesting.
+TEST_F(ParserTest, ParenthesisedFormulasAndExpressions) {
+  Model m = parse_model(H + "equation x - q = 0\n"
+                            "constraint ((((x) + 1)) > 0 and (((q)) < 2 or (x*(q + 1) >= -1)))\n",
+                        "groups.robot");
+  ASSERT_EQ(m.constraints.size(), 1u);
+  EXPECT_EQ(m.constraint_atoms.size(), 3u);
+  const FormulaNode& root = m.formula[size_t(m.constraints[0].root)];
+  EXPECT_EQ(root.kind, FormulaNode::And);
+  ASSERT_EQ(root.kids.size(), 2u);
+  EXPECT_EQ(m.formula[size_t(root.kids[0])].kind, FormulaNode::Atom);
+  EXPECT_EQ(m.formula[size_t(root.kids[1])].kind, FormulaNode::Or);
+  // 200 parentheses are allowed (the nesting limit), as for expressions.
+  EXPECT_NO_THROW(parse_model(nested_formula(199), "deep.robot"));
 }
 
 void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }

@@ -3,6 +3,7 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <unordered_set>
 #include <vector>
 
 namespace aspects {
@@ -69,24 +70,33 @@ size_t size_in_bits(const mpq_t q) {
 }  // namespace
 
 bool exactly_one_period(const Dag& dag, const ConstantMeanings& meanings, int lo, int hi) {
-  // The nodes the two bounds use; children have smaller ids than their parents.
-  const int top = std::max(lo, hi);
-  std::vector<char> used(size_t(top) + 1, 0);
-  used[lo] = used[hi] = 1;
-  for (int id = top; id >= 0; --id) {
-    if (!used[id]) continue;
-    const Node& n = dag.node(id);
-    if (n.a >= 0) used[n.a] = 1;
-    if (n.b >= 0) used[n.b] = 1;
+  // The nodes the two bounds use, in increasing ids (children before parents). Found by a
+  // walk from the bounds, not a scan of every id below them: the parser calls this once per
+  // periodic variable, and the DAG may already hold a large model.
+  std::vector<int> used{lo, hi}, stack{lo, hi};
+  std::unordered_set<int> seen{lo, hi};
+  while (!stack.empty()) {
+    const Node& n = dag.node(stack.back());
+    stack.pop_back();
+    for (int c : {n.a, n.b})
+      if (c >= 0 && seen.insert(c).second) {
+        used.push_back(c);
+        stack.push_back(c);
+      }
   }
-  std::vector<PiAffine> value(size_t(top) + 1);
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  auto slot = [&](int id) {
+    return size_t(std::lower_bound(used.begin(), used.end(), id) - used.begin());
+  };
+  std::vector<PiAffine> value(used.size());
   size_t budget = size_t(1) << 24;  // bits of rationals in all
-  for (int id = 0; id <= top; ++id) {
-    if (!used[id]) continue;
+  for (size_t i = 0; i < used.size(); ++i) {
+    const int id = used[i];
     const Node& n = dag.node(id);
-    PiAffine& r = value[id];
-    const PiAffine* x = n.a >= 0 ? &value[n.a] : nullptr;
-    const PiAffine* y = n.b >= 0 ? &value[n.b] : nullptr;
+    PiAffine& r = value[i];
+    const PiAffine* x = n.a >= 0 ? &value[slot(n.a)] : nullptr;
+    const PiAffine* y = n.b >= 0 ? &value[slot(n.b)] : nullptr;
     if ((x && !x->known) || (y && !y->known)) continue;
     switch (n.op) {
       case Op::Const: {
@@ -138,10 +148,11 @@ bool exactly_one_period(const Dag& dag, const ConstantMeanings& meanings, int lo
     if (bits > budget) return false;
     budget -= bits;
   }
-  if (!value[lo].known || !value[hi].known) return false;
+  const PiAffine &low = value[slot(lo)], &high = value[slot(hi)];
+  if (!low.known || !high.known) return false;
   PiAffine width;
-  mpq_sub(width.a, value[hi].a, value[lo].a);
-  mpq_sub(width.b, value[hi].b, value[lo].b);
+  mpq_sub(width.a, high.a, low.a);
+  mpq_sub(width.b, high.b, low.b);
   return mpq_cmp_ui(width.a, 2, 1) == 0 && mpq_sgn(width.b) == 0;
 }
 

@@ -67,17 +67,37 @@ int Dag::add_node(Node n) {
   return id;
 }
 
-int Dag::constant(const Interval& v) {
-  // Identical enclosures share a node; the key is the exact endpoints in hex, at
-  // full length (a truncated key could merge two different constants).
-  auto exact = [](mpfr_srcptr x) {
-    char* s = nullptr;
-    mpfr_asprintf(&s, "%Ra", x);
-    std::string out(s);
-    mpfr_free_str(s);
-    return out;
+namespace {
+
+// Appends the exact value of x as bytes: its kind (with the sign), and for a regular number
+// its exponent and significand limbs, the low zero limbs left out so that equal values at
+// different precisions have one key. Equal keys are equal values. (It was the text "%Ra"
+// of each end: a third of the parse of a long expression went there.)
+void append_exact(std::string& key, mpfr_srcptr x) {
+  auto raw = [&key](const void* p, size_t bytes) {
+    key.append(static_cast<const char*>(p), bytes);
   };
-  auto key = std::make_pair(exact(&v.get()->left), exact(&v.get()->right));
+  const mpfr_ptr y = const_cast<mpfr_ptr>(x);  // the custom interface only reads here
+  const int kind = mpfr_custom_get_kind(y);
+  raw(&kind, sizeof kind);
+  if (kind != MPFR_REGULAR_KIND && kind != -MPFR_REGULAR_KIND) return;
+  const mpfr_exp_t exp = mpfr_custom_get_exp(y);
+  raw(&exp, sizeof exp);
+  // Limbs from the least significant (index 0) to the most; unused low bits are zero.
+  const mp_limb_t* limbs = static_cast<const mp_limb_t*>(mpfr_custom_get_significand(y));
+  size_t n = mpfr_custom_get_size(mpfr_get_prec(x)) / sizeof(mp_limb_t), low = 0;
+  while (low < n && limbs[low] == 0) ++low;
+  raw(limbs + low, (n - low) * sizeof(mp_limb_t));
+}
+
+}  // namespace
+
+int Dag::constant(const Interval& v) {
+  // Identical enclosures share a node; the key is the exact endpoints, at full length (a
+  // truncated key could merge two different constants).
+  std::string key;
+  append_exact(key, &v.get()->left);
+  append_exact(key, &v.get()->right);
   auto it = const_index_.find(key);
   if (it != const_index_.end()) return it->second;
   consts_.push_back(v);
@@ -219,10 +239,30 @@ int precedence(const Node& n) {
 }  // namespace
 
 std::string Dag::to_string(int id, const std::vector<std::string>& names) const {
+  std::string out;
+  write(id, names, out);
+  if (out.size() > kMaxTextLength) {
+    out.resize(kMaxTextLength);
+    out += " ...";
+  }
+  return out;
+}
+
+// Appends node `id` to `out`, and stops expanding once out is longer than the limit: a DAG
+// with shared nodes (a_i = a_{i-1} + a_{i-1}) has a text exponentially longer than itself.
+void Dag::write(int id, const std::vector<std::string>& names, std::string& out) const {
+  if (out.size() > kMaxTextLength) return;
   const Node& n = nodes_[id];
   auto sub = [&](int c, int min_prec) {
-    std::string s = to_string(c, names);
-    return precedence(nodes_[c]) < min_prec ? "(" + s + ")" : s;
+    const bool parens = precedence(nodes_[c]) < min_prec;
+    if (parens) out += '(';
+    write(c, names, out);
+    if (parens) out += ')';
+  };
+  auto binary = [&](int left_prec, const char* op, int right_prec) {
+    sub(n.a, left_prec);
+    out += op;
+    sub(n.b, right_prec);
   };
   switch (n.op) {
     case Op::Const: {
@@ -233,22 +273,40 @@ std::string Dag::to_string(int id, const std::vector<std::string>& names) const 
         std::snprintf(buf, sizeof buf, "%.17g", lo);
       else
         std::snprintf(buf, sizeof buf, "[%.17g, %.17g]", lo, hi);
-      return buf;
+      out += buf;
+      return;
     }
-    case Op::Var: return names.at(n.k);
-    case Op::Add: return sub(n.a, 1) + " + " + sub(n.b, 1);
-    case Op::Sub: return sub(n.a, 1) + " - " + sub(n.b, 2);
-    case Op::Mul: return sub(n.a, 2) + "*" + sub(n.b, 3);
-    case Op::Div: return sub(n.a, 2) + "/" + sub(n.b, 3);
-    case Op::Neg: return "-" + sub(n.a, 3);
-    case Op::Sqr: return sub(n.a, 5) + "^2";
-    case Op::Pow: return sub(n.a, 5) + "^" + std::to_string(n.k);
+    case Op::Var: out += names.at(n.k); return;
+    case Op::Add: binary(1, " + ", 1); return;
+    case Op::Sub: binary(1, " - ", 2); return;
+    case Op::Mul: binary(2, "*", 3); return;
+    case Op::Div: binary(2, "/", 3); return;
+    case Op::Neg:
+      out += '-';
+      sub(n.a, 3);
+      return;
+    case Op::Sqr:
+      sub(n.a, 5);
+      out += "^2";
+      return;
+    case Op::Pow:
+      sub(n.a, 5);
+      out += "^" + std::to_string(n.k);
+      return;
     case Op::Min:
     case Op::Max:
     case Op::Step:
-      return std::string(op_name(n.op)) + "(" + to_string(n.a, names) + ", " +
-             to_string(n.b, names) + ")";
-    default: return std::string(op_name(n.op)) + "(" + to_string(n.a, names) + ")";
+      out += std::string(op_name(n.op)) + "(";
+      write(n.a, names, out);
+      out += ", ";
+      write(n.b, names, out);
+      out += ')';
+      return;
+    default:
+      out += std::string(op_name(n.op)) + "(";
+      write(n.a, names, out);
+      out += ')';
+      return;
   }
 }
 

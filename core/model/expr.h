@@ -62,11 +62,14 @@ class Dag {
   bool depends_on(int node, int v) const;
   // Ids of the nodes a set of roots needs, in increasing (forward) order.
   std::vector<int> closure(const std::vector<int>& roots) const;
-  // Human-readable form, fully parenthesised where needed.
+  // Human-readable form, fully parenthesised where needed; cut after kMaxTextLength
+  // characters (then ending in " ...").
   std::string to_string(int node, const std::vector<std::string>& var_names) const;
+  static constexpr size_t kMaxTextLength = size_t(1) << 16;
 
  private:
   int add_node(Node n);
+  void write(int node, const std::vector<std::string>& var_names, std::string& out) const;
   int derive(int node, int var);
 
   std::vector<Node> nodes_;
@@ -74,7 +77,7 @@ class Dag {
   std::vector<bool> depends_;
   std::vector<int> depth_;
   std::map<std::tuple<int, int, int, int>, int> index_;
-  std::map<std::pair<std::string, std::string>, int> const_index_;
+  std::map<std::string, int> const_index_;  // both ends' exact bytes -> node
   std::map<std::pair<int, int>, int> deriv_memo_;
   std::vector<std::vector<int>> var_deps_;  // sorted variable list per node
   int zero_ = -1, one_ = -1;

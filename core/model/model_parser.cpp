@@ -4,13 +4,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 
-#include "model/eval.h"
+#include "model/constant_values.h"
 #include "model/exact_period.h"
 #include "model/model.h"
 
@@ -142,7 +143,9 @@ const std::set<std::string>& keywords() {
 class Parser {
  public:
   Parser(const std::string& text, const std::string& file, Model& m)
-      : toks_(Lexer(text, file).run()), file_(file), m_(m) {}
+      : toks_(Lexer(text, file).run()), file_(file), m_(m), constants_(m.dag) {
+    index_groups();
+  }
 
   void run() {
     while (peek().kind != Tok::End) {
@@ -275,6 +278,11 @@ class Parser {
 
   void variable(const Token& kw, VarKind kind) {
     Token name = expect_new_name();
+    // A neighbour pair packs one shift per variable in 2 bits of 32. Refused at the
+    // declaration that passes the limit: a model of thousands is not parsed further.
+    if (m_.vars.size() >= size_t(kMaxVariables))
+      fail(name, "'" + name.text + "' is variable " + std::to_string(m_.vars.size() + 1) +
+                     "; at most " + std::to_string(kMaxVariables) + " variables are supported");
     if (!is_word("in")) fail(peek(), "expected 'in' after the variable's name, found " + describe(peek()));
     ++p_;
     const Token& open = peek();
@@ -305,6 +313,16 @@ class Parser {
       if (!exactly_one_period(m_.dag, meanings_, lo_node, hi_node))
         fail(per, "periodic domain of '" + name.text + "' must be exactly one period: bounds a*pi + b "
                   "(a, b rational) with upper - lower = 2*pi exactly, e.g. [-pi, pi]");
+      // Exact bounds may still have wide enclosures (k - k with a huge k is [-huge, huge]):
+      // the root box would be many periods wide.
+      const double width = v.domain.width_up();
+      if (!(width <= max_period_width())) {
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%.17g", width);
+        fail(open, "periodic domain of '" + name.text + "' evaluates to an enclosure of width " +
+                       shown + ", more than one period (2*pi) plus rounding: write its bounds "
+                       "so that they evaluate closely (e.g. [-pi, pi])");
+      }
       v.periodic = true;
     }
     (void)kw;
@@ -320,10 +338,12 @@ class Parser {
     int node = expr();
     if (node_out) *node_out = node;
     if (!m_.dag.is_constant(node)) fail(at, "a domain bound must be a constant expression");
-    Evaluator ev(m_.dag);
-    ev.forward(m_.dag.closure({node}), Box{});
-    Interval v = ev.value(node);
+    Interval v = constants_.value(node);
     if (v.empty() || !v.bounded()) fail(at, "domain bound is not a finite number");
+    // Boxes are stored as doubles: an enclosure beyond their range is no domain.
+    if (!std::isfinite(v.lo_down()) || !std::isfinite(v.hi_up()))
+      fail(at, "domain bound is not a finite number: it evaluates beyond the range of doubles "
+               "(about 1.8e308)");
     return v;
   }
 
@@ -356,23 +376,16 @@ class Parser {
     return int(m_.formula.size()) - 1;
   }
   int formula_primary() {
-    if (is_punct("(")) {
-      // Either a parenthesised formula or an expression starting with '(':
-      // try the formula first and fall back to a comparison.
-      size_t save = p_;
-      size_t formula_size = m_.formula.size(), atoms = m_.constraint_atoms.size();
-      int nesting = nesting_;
-      try {
-        ++p_;
-        int f = formula();
-        expect_punct(")");
-        if (!is_relation()) return f;
-      } catch (const ModelError&) {
-      }
-      p_ = save;
-      nesting_ = nesting;
-      m_.formula.resize(formula_size);
-      m_.constraint_atoms.resize(atoms);
+    // A parenthesised group is a formula when it holds a comparison, 'and' or 'or' (no
+    // expression does), an expression otherwise (robots/README.md). Decided from the
+    // index, not by trying one and then the other: that retried every nested group.
+    if (is_punct("(") && group_holds_logic(p_)) {
+      const Token& open = next();
+      if (++nesting_ > kMaxNesting) fail(open, "formula nested too deeply");
+      int f = formula();
+      expect_punct(")");
+      --nesting_;
+      return f;
     }
     const Token& at = peek();
     int lhs = expr();
@@ -406,6 +419,8 @@ class Parser {
       a = m_.dag.binary(op, a, term());
       if (m_.dag.depth(a) > kMaxDepth) fail(at, "expression too long (depth over 1000)");
     }
+    // Also without a sum: sin(a) where the name a is itself deep, a chain of lets.
+    if (m_.dag.depth(a) > kMaxDepth) fail(at, "expression too long (depth over 1000)");
     --nesting_;
     return a;
   }
@@ -512,10 +527,6 @@ class Parser {
       fail(end, "the system is not square: " + std::to_string(np) + " pose variable(s), " +
                     std::to_string(nc) + " command variable(s), " + std::to_string(ne) +
                     " equation(s); they must be equal");
-    // A neighbour pair packs one shift per variable in 2 bits of 32.
-    if (np + nc > 16)
-      fail(end, "the model has " + std::to_string(np + nc) +
-                    " variables; at most 16 are supported");
     check_periodic_use();
     for (int e : m_.equations) {
       for (int j : m_.pose) m_.fx.push_back(m_.dag.derivative(e, j));
@@ -532,16 +543,26 @@ class Parser {
     roots.insert(roots.end(), m_.user_factors.begin(), m_.user_factors.end());
     roots.insert(roots.end(), m_.constraint_atoms.begin(), m_.constraint_atoms.end());
     std::vector<int> live = d.closure(roots);
+    std::vector<char> bare(size_t(d.size()), 0);
     for (size_t vi = 0; vi < m_.vars.size(); ++vi) {
       if (!m_.vars[vi].periodic) continue;
+      // bare[id]: the variable reaches id through +, - and negation only. Once per node, in
+      // increasing ids (children first): a walk per use is exponential on a shared DAG
+      // (let a1 = a0 + a0, let a2 = a1 + a1, ...).
+      for (int id : live) {
+        const Node& n = d.node(id);
+        bool passes = n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg;
+        bare[id] = n.op == Op::Var ? n.k == int(vi)
+                   : passes        ? bare[n.a] || (n.b >= 0 && bare[n.b])
+                                   : 0;
+      }
       for (int id : live) {
         const Node& n = d.node(id);
         bool wraps = n.op == Op::Sin || n.op == Op::Cos;
         bool passes = n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg;
         if (wraps || passes || n.op == Op::Var || n.op == Op::Const) continue;
         for (int c : {n.a, n.b}) {
-          if (c < 0 || !d.depends_on(c, int(vi))) continue;
-          if (bare_use(c, int(vi)))
+          if (c >= 0 && bare[c])
             fail(var_tokens_[vi], "periodic variable '" + m_.vars[vi].name +
                                       "' must appear only inside sin() or cos() (found under '" +
                                       op_name(n.op) + "')");
@@ -549,32 +570,58 @@ class Parser {
       }
       // An equation or factor that is itself a sum with the bare variable is not periodic.
       for (int root : roots) {
-        if (bare_use(root, int(vi)))
+        if (bare[root])
           fail(var_tokens_[vi], "periodic variable '" + m_.vars[vi].name +
                                     "' must appear only inside sin() or cos()");
       }
     }
   }
-  // Does the variable reach `id` through +, - and negation only?
-  bool bare_use(int id, int v) const {
-    const Node& n = m_.dag.node(id);
-    if (n.op == Op::Var) return n.k == v;
-    if (n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg)
-      return bare_use(n.a, v) || (n.b >= 0 && bare_use(n.b, v));
-    return false;
+
+  // Each '(' token's matching ')' (toks_.size() - 1 when unmatched), and how many
+  // comparisons, 'and' and 'or' precede each token: together they tell in O(1) whether a
+  // group holds logic.
+  void index_groups() {
+    group_end_.assign(toks_.size(), toks_.size() - 1);
+    logic_before_.assign(toks_.size() + 1, 0);
+    std::vector<size_t> open;
+    for (size_t i = 0; i < toks_.size(); ++i) {
+      const Token& t = toks_[i];
+      // A punctuation token starting with '<' or '>' is a comparison (<, <=, >, >=).
+      const char c = t.kind == Tok::Punct ? t.text[0] : 0;
+      const bool logic = c == '<' || c == '>' ||
+                         (t.kind == Tok::Ident && (t.text == "and" || t.text == "or"));
+      logic_before_[i + 1] = logic_before_[i] + (logic ? 1 : 0);
+      if (c == '(') open.push_back(i);
+      if (c == ')' && !open.empty()) {
+        group_end_[open.back()] = i;
+        open.pop_back();
+      }
+    }
+  }
+  bool group_holds_logic(size_t open) const {
+    return logic_before_[group_end_[open]] > logic_before_[open + 1];
   }
 
   struct Name {
     int node;
     int line;
   };
-  static constexpr int kMaxNesting = 200, kMaxDepth = 1000;
+  static constexpr int kMaxNesting = 200, kMaxDepth = 1000, kMaxVariables = 16;
+  // One period and 2^-20 of it, or 2^(20 - p) of it at a working precision of p < 40 bits:
+  // the rounding of sensible bounds (up to 1e5 or so at 24 bits) stays far below.
+  static double max_period_width() {
+    const long excess_bits = std::min(20L, working_precision() - 20);
+    return 2 * M_PI * (1 + std::ldexp(1.0, -int(excess_bits)));
+  }
   int nesting_ = 0;
   std::vector<Token> toks_;
   size_t p_ = 0;
   const std::string& file_;
   Model& m_;
   std::map<std::string, Name> names_;
+  ConstantValues constants_;  // the domain bounds' enclosures
+  std::vector<size_t> group_end_;     // see index_groups()
+  std::vector<size_t> logic_before_;
   ConstantMeanings meanings_;  // exact meaning of each literal and pi node, for periods
 
   // The DAG shares constant nodes with equal enclosures: a node that two different

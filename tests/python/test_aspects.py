@@ -369,6 +369,20 @@ def test_bad_pose(rprpr, pose, error, match):
         r.path(pose, [3, 5])
 
 
+@pytest.mark.parametrize("x1", [1e-310, -5e-324, 2.2250738585072009e-308, 1e-400])
+def test_subnormal_pose(rprpr, x1):
+    # A subnormal (or an underflow to 0) is a finite pose like any other, as in `--pose`.
+    cli_dir, _, r, _ = rprpr
+    q = r.query([x1, 5])
+    assert q["pose"] == [x1, 5.0]
+    assert q == json.loads(cli("query", cli_dir, "--pose", f"{x1!r},5", "--json",
+                               check=False).stdout)
+    p = r.path([x1, 5], [3, 5])
+    assert p["from"] == [x1, 5.0]
+    assert p == json.loads(cli("path", cli_dir, "--from", f"{x1!r},5", "--to", "3,5", "--json",
+                               check=False).stdout)
+
+
 def test_bad_csnc(rprpr):
     _, _, r, _ = rprpr
     with pytest.raises(ValueError, match="csnc must be between 0 and 1"):
