@@ -6,22 +6,29 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}; runs=${2:-3}; limit=${3:-120}
 aspects=$build/apps/aspects
-echo "| robot | result | median wall (s) | runs | first cover boxes | boxes at the end | bisections |"
-echo "|---|---|---|---|---|---|---|"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 for robot in prrp rprpr rrrrr 3rpr; do
-  times=(); line=""
   for ((i = 0; i < runs; i++)); do
-    out=$(/usr/bin/time -f "%e" -o /tmp/count_bench.time "$aspects" count "robots/$robot.robot" \
-          --time-limit "$limit" --json 2>/dev/null || true)
-    times+=("$(cat /tmp/count_bench.time)")
-    line=$(printf '%s' "$out" | /usr/bin/python3 -c '
-import json, sys
-j = json.load(sys.stdin)
-u = j["upper_bound"]
-res = (f"{j[\"lower_bound\"]} exactly" if j["exact"] else
-       f"{j[\"lower_bound\"]}..{u if u is not None else \"?\"} ({j[\"stop\"]})")
-print(f"{res} | {{t}} | {{n}} | {j[\"first_cover\"][\"boxes\"]} | {j[\"boxes\"]} | {j[\"bisections\"]}")')
+    /usr/bin/time -f "%e" -o "$tmp/time" "$aspects" count "robots/$robot.robot" \
+      --time-limit "$limit" --json > "$tmp/$robot.$i.json" 2>/dev/null || true
+    echo "$robot $(cat "$tmp/time") $tmp/$robot.$i.json" >> "$tmp/runs"
   done
-  median=$(printf '%s\n' "${times[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
-  echo "| $robot | ${line//\{t\}/$median} |" | sed "s/{n}/$runs/"
 done
+/usr/bin/python3 - "$tmp/runs" <<'PY'
+import json, statistics, sys
+rows = {}
+for line in open(sys.argv[1]):
+    robot, secs, path = line.split()
+    rows.setdefault(robot, []).append((float(secs), json.load(open(path))))
+print("| robot | result | median wall (s) | runs | first cover boxes | boxes at the end | bisections | open pieces (no chart / no point / star failed) |")
+print("|---|---|---|---|---|---|---|---|")
+for robot, runs in rows.items():
+    j = runs[-1][1]
+    up = j["upper_bound"]
+    res = "%d exactly" % j["lower_bound"] if j["exact"] else "%d..%s (%s)" % (
+        j["lower_bound"], "?" if up is None else up, j["stop"])
+    r = j["open_pieces_by_reason"]
+    print("| %s | %s | %.2f | %d | %d | %d | %d | %d / %d / %d |" % (
+        robot, res, statistics.median(s for s, _ in runs), len(runs), j["first_cover"]["boxes"],
+        j["boxes"], j["bisections"], r["no_chart"], r["no_point"], r["not_star"]))
+PY

@@ -91,6 +91,7 @@ class Counter {
   // tree is the bounding-volume hierarchy of the neighbourhood graph (recomputed each round
   // on the boxes as they are: a box with a chart becomes U × the range of its graph).
   void add_first_cover(const AspectsResult& solved) {
+    separation_bound_ = solved.separation.lower_bound;
     const OutputBoxes& R = solved.boxes;
     cells_.reserve(R.size());
     for (int i = 0; i < R.size(); ++i) {
@@ -140,10 +141,25 @@ class Counter {
     CountResult out;
     for (int round = 0;; ++round) {
       out.rounds = round + 1;
-      for (size_t c = 0; c < cells_.size(); ++c)
+      bool stop = false;
+      for (size_t c = 0; c < cells_.size() && !stop; ++c) {
         if (cells_[c].alive && !cells_[c].decided) decide_cell(int32_t(c));
-      if (stopped()) {
+        if (c % 64 == 0) stop = stopped();
+      }
+      if (stop || stopped()) {
         out.stop = CountStop::Stopped;
+        if (round == 0) {
+          // Stopped before a decision: the lower bound is the first cover's separation (the
+          // same graph with every adjacency undecided, C1), no upper bound. The graph of a
+          // first cover can be far larger than what the stop left time for.
+          out.bounds = CountBounds{};
+          out.bounds.lower = separation_bound_;
+          for (const Cell& c : cells_) out.bounds.open_pieces += c.alive && !c.solution;
+          break;
+        }
+        // The boxes not decided yet have undecided pieces: the bounds still hold.
+        for (Cell& c : cells_)
+          if (c.alive && !c.decided) leave_undecided(c);
         bounds_and_open(out, false);
         break;
       }
@@ -248,6 +264,17 @@ class Counter {
       if (i == per.size()) break;
     }
     return found;
+  }
+
+  // A box the refinement did not reach: a piece of every class its signs allow, undecided.
+  void leave_undecided(Cell& c) {
+    c.decided = true;
+    c.pieces.clear();
+    std::vector<Interval> values;
+    const bool defined = fg_.values(ev_, c.box, values);
+    for (uint32_t s = 0; s < (uint32_t(1) << fg_.factors()); ++s)
+      if (!defined || !class_empty(values, s))
+        c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
   }
 
   // ----- pieces
@@ -623,6 +650,7 @@ class Counter {
   std::unordered_map<uint64_t, int32_t> adj_index_;  // (a << 32 | b) -> index in adj_
   std::vector<SearchNode> tree_;
   long star_boxes_ = 0;
+  int separation_bound_ = 0;
 };
 
 }  // namespace
@@ -649,9 +677,13 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   FactorGradients fg(model, nodes);
   Counter counter(model, config, fg);
   counter.add_first_cover(solved);
+  const long first_cover_boxes = solved.boxes.size();
+  // The counter holds its own copies: the solve's go before the refinement needs memory.
+  std::vector<SearchNode>().swap(solved.tree);
+  solved.boxes.release();
   CountResult out = counter.run();
   out.separation_bound = solved.separation.lower_bound;
-  out.first_cover_boxes = solved.boxes.size();
+  out.first_cover_boxes = first_cover_boxes;
   for (const Factor& f : solved.factors) out.factor_text.push_back(f.text + " (" + f.origin + ")");
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
