@@ -11,7 +11,7 @@ for robot in prrp rprpr rrrrr 3rpr; do
   for ((i = 0; i < runs; i++)); do
     /usr/bin/time -f "%e" -o "$tmp/time" "$aspects" count "robots/$robot.robot" \
       --time-limit "$limit" --json > "$tmp/$robot.$i.json" 2>/dev/null || true
-    echo "$robot $(cat "$tmp/time") $tmp/$robot.$i.json" >> "$tmp/runs"
+    echo "$robot $(tail -n 1 "$tmp/time") $tmp/$robot.$i.json" >> "$tmp/runs"
   done
 done
 /usr/bin/python3 - "$tmp/runs" <<'PY'
