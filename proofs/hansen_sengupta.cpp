@@ -11,25 +11,34 @@ namespace aspects {
 
 void round_out_to_doubles(Interval& x) { x.set_hull(x.lo_down(), x.hi_up()); }
 
+template <class I>
+void jacobian_columns(const Model& m, const Matrix<I>& Jx, const Matrix<I>& Jq,
+                      const std::vector<int>& vars, Matrix<I>& out) {
+  const int n = m.n();
+  if (out.rows() != n || out.cols() != int(vars.size())) out = Matrix<I>(n, int(vars.size()));
+  for (size_t j = 0; j < vars.size(); ++j) {
+    const auto p = std::find(m.pose.begin(), m.pose.end(), vars[j]);
+    const bool pose = p != m.pose.end();
+    const int col = pose ? int(p - m.pose.begin())
+                         : int(std::find(m.command.begin(), m.command.end(), vars[j]) -
+                               m.command.begin());
+    for (int i = 0; i < n; ++i) out(i, int(j)) = pose ? Jx(i, col) : Jq(i, col);
+  }
+}
+template void jacobian_columns(const Model&, const Matrix<Interval>&, const Matrix<Interval>&,
+                               const std::vector<int>&, Matrix<Interval>&);
+template void jacobian_columns(const Model&, const Matrix<DInterval>&, const Matrix<DInterval>&,
+                               const std::vector<int>&, Matrix<DInterval>&);
+
 namespace {
 
-// The Jacobian in the unknowns `u`: each column from Fx or Fq, as its variable is a pose or a
-// command.
+// The Jacobian in the unknowns `u` (a chart's w).
 template <class I>
 EvalStatus mixed_jacobian(ModelEvaluator& ev, const Box& box, const std::vector<int>& u,
                           HsArrays<I>& w) {
-  const Model& m = ev.model();
-  const int n = m.n();
   if (ev.jacobian_x(box, w.Jx) != EvalStatus::Defined) return EvalStatus::Undefined;
   if (ev.jacobian_q(box, w.Jq) != EvalStatus::Defined) return EvalStatus::Undefined;
-  if (w.J.rows() != n) w.J = Matrix<I>(n, n);
-  for (int j = 0; j < n; ++j) {
-    const auto p = std::find(m.pose.begin(), m.pose.end(), u[j]);
-    const bool pose = p != m.pose.end();
-    const int col = pose ? int(p - m.pose.begin())
-                         : int(std::find(m.command.begin(), m.command.end(), u[j]) - m.command.begin());
-    for (int i = 0; i < n; ++i) w.J(i, j) = pose ? w.Jx(i, col) : w.Jq(i, col);
-  }
+  jacobian_columns(ev.model(), w.Jx, w.Jq, u, w.J);
   return EvalStatus::Defined;
 }
 

@@ -73,6 +73,12 @@ Existence prove_existence(ModelEvaluator& ev, const Box& box, double tau, int ma
                           ExistenceProof& proof, HsWorkspace& ws, bool in_pose = false,
                           const Box* grid = nullptr, const std::vector<int>* unknowns = nullptr);
 
+// The Jacobian of f in the variables `vars` (model order indices), each column taken from Fx
+// or Fq as its variable is a pose or a command: a chart's ∂_w f or ∂_u f.
+template <class I>
+void jacobian_columns(const Model& m, const Matrix<I>& Jx, const Matrix<I>& Jq,
+                      const std::vector<int>& vars, Matrix<I>& out);
+
 // Rounds both ends outward to doubles (a superset; identity at 53 bits).
 void round_out_to_doubles(Interval& x);
 

@@ -22,7 +22,7 @@ bool newton_w(ModelEvaluator& ev, const Box& box, const std::vector<int>& w,
   for (int j = 0; j < n; ++j) pt[w[j]].set_point(box[w[j]].mid());
   const Model& m = ev.model();
   std::vector<Interval> f;
-  IMatrix Jx, Jq;
+  IMatrix Jx, Jq, Jw;
   Eigen::MatrixXd A(n, n);
   Eigen::VectorXd b(n);
   for (int it = 0; it < 30; ++it) {
@@ -30,13 +30,9 @@ bool newton_w(ModelEvaluator& ev, const Box& box, const std::vector<int>& w,
     if (ev.jacobian_x(pt, Jx) != EvalStatus::Defined || ev.jacobian_q(pt, Jq) != EvalStatus::Defined)
       return false;
     for (int i = 0; i < n; ++i) b(i) = f[i].mid();
-    for (int j = 0; j < n; ++j) {
-      const auto p = std::find(m.pose.begin(), m.pose.end(), w[j]);
-      const bool pose = p != m.pose.end();
-      const int col = pose ? int(p - m.pose.begin())
-                           : int(std::find(m.command.begin(), m.command.end(), w[j]) - m.command.begin());
-      for (int i = 0; i < n; ++i) A(i, j) = (pose ? Jx(i, col) : Jq(i, col)).mid();
-    }
+    jacobian_columns(m, Jx, Jq, w, Jw);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = Jw(i, j).mid();
     Eigen::VectorXd dx = A.fullPivLu().solve(b);
     if (!dx.allFinite()) return false;
     double step = 0;

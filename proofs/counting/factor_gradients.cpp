@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hansen_sengupta.h"
 #include "preconditioner.h"
 
 namespace aspects {
@@ -39,19 +40,10 @@ bool FactorGradients::implicit_jacobian(ModelEvaluator& ev, const Chart& chart, 
   IMatrix Jx, Jq;
   if (ev.jacobian_x(z, Jx) != EvalStatus::Defined || ev.jacobian_q(z, Jq) != EvalStatus::Defined)
     return false;
-  // ∂_u f and ∂_w f: each column from Fx or Fq, as its variable is a pose or a command.
-  IMatrix Ju(n, n), Jw(n, n);
-  auto column = [&](int var, IMatrix& into, int j) {
-    const auto p = std::find(m.pose.begin(), m.pose.end(), var);
-    const bool pose = p != m.pose.end();
-    const int col = pose ? int(p - m.pose.begin())
-                         : int(std::find(m.command.begin(), m.command.end(), var) - m.command.begin());
-    for (int i = 0; i < n; ++i) into(i, j) = pose ? Jx(i, col) : Jq(i, col);
-  };
-  for (int j = 0; j < n; ++j) {
-    column(chart.u[j], Ju, j);
-    column(chart.w[j], Jw, j);
-  }
+  // ∂_u f and ∂_w f.
+  IMatrix Ju, Jw;
+  jacobian_columns(m, Jx, Jq, chart.u, Ju);
+  jacobian_columns(m, Jx, Jq, chart.w, Jw);
   std::vector<double> C;
   if (!approximate_inverse(Jw, C)) return false;
   IMatrix E(n, n), B(n, n);
