@@ -1,5 +1,7 @@
 #include "counting/empty_piece.h"
 
+#include "counting/paving.h"
+
 #include <algorithm>
 
 namespace aspects {
@@ -22,20 +24,7 @@ EmptyVerdict prove_piece_empty(ModelEvaluator& ev, const FactorGradients& fg, co
       for (int i = 0; i < p && !cleared; ++i)
         cleared = (cls >> i) & 1 ? values[i].hi_up() <= 0 : values[i].lo_down() >= 0;
     if (cleared) continue;
-    int best = -1;
-    double rel = 0;
-    for (int k = 0; k < n; ++k) {
-      const double r = z[chart.u[k]].width_up() / std::max(box[chart.u[k]].width_up(), 1e-300);
-      if (r > rel) rel = r, best = k;
-    }
-    if (best < 0 || rel < 1e-6) return EmptyVerdict::NotProved;
-    const int var = chart.u[best];
-    const double m = z[var].mid();
-    Box left = z, right = std::move(z);
-    left[var].set_hull(left[var].lo_down(), m);
-    right[var].set_hull(m, right[var].hi_up());
-    stack.push_back(std::move(left));
-    stack.push_back(std::move(right));
+    if (!bisect_widest_u(chart, box, std::move(z), 1e-6, stack)) return EmptyVerdict::NotProved;
   }
   return EmptyVerdict::Empty;
 }

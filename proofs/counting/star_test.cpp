@@ -1,5 +1,7 @@
 #include "counting/star_test.h"
 
+#include "counting/paving.h"
+
 #include <algorithm>
 
 namespace aspects {
@@ -81,8 +83,6 @@ StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart
       return StarVerdict::NotProved;
     }
 
-  std::vector<double> least(n);
-  for (int k = 0; k < n; ++k) least[k] = limits.min_width * box[chart.u[k]].width_up();
   std::vector<Box> stack{box};
   std::vector<uint8_t> defined(nc);
   long paved = 0;
@@ -133,26 +133,8 @@ StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart
       cleared = d.certainly_neg();
     }
     if (cleared) continue;
-    // Bisect the u-coordinate widest relative to the box.
-    int best = -1;
-    double rel = 0;
-    for (int k = 0; k < n; ++k) {
-      const double wk = z[chart.u[k]].width_up();
-      if (wk <= least[k]) continue;
-      const double r = wk / std::max(box[chart.u[k]].width_up(), 1e-300);
-      if (r > rel) rel = r, best = k;
-    }
-    if (best < 0) {
+    if (!bisect_widest_u(chart, box, std::move(z), limits.min_width, stack))
       return StarVerdict::NotProved;
-    }
-    const int var = chart.u[best];
-    const double m = z[var].mid();
-    // The halves keep z's enclosure of w: it holds w over both.
-    Box left = z, right = std::move(z);
-    left[var].set_hull(left[var].lo_down(), m);
-    right[var].set_hull(m, right[var].hi_up());
-    stack.push_back(std::move(left));
-    stack.push_back(std::move(right));
   }
   return StarVerdict::StarShaped;
 }
