@@ -1,6 +1,6 @@
-// A search tree far deeper than any thread's stack allows a recursion over it (issue 50: a
-// run stopped tens of thousands of levels down crashed in the merge). The tests that walk
-// it (graft, the part codec, the neighbourhood graph) must get through it iteratively.
+// A search tree far deeper than any thread's stack allows a recursion over it: a run stopped
+// tens of thousands of levels down must still merge and write its result. The tests that
+// walk it (graft, the part codec, the neighbourhood graph) must get through it iteratively.
 // 200,000 levels: a recursion of even 48-byte frames passes 8 MiB.
 #pragma once
 

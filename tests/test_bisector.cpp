@@ -66,7 +66,7 @@ TEST(Bisector, KeepsTheMeaningOfEpsAndSplitsInside) {
   }
 }
 
-// Issue 50: with eps below the doubles' spacing (eps 1e-300, a cell near 1), a variable
+// With eps below the doubles' spacing (eps 1e-300, a cell near 1), a variable
 // one ulp wide is still wider than eps, but no double lies strictly inside it. Cut at its
 // middle rounded to an end, the box had a child equal to itself, again and again: a tree
 // tens of thousands of levels deep, and a certificate check_cert rejected ("bisection point

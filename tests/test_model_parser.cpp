@@ -263,7 +263,7 @@ std::string eighteen_variables() {
 
 // k0 = 1.1 and k_i = k_{i-1}^2 up to k_n (k16 is about 1e2712, MPFR's range but not a
 // double's; k12 about 1e169), then a periodic domain whose bounds are exact but evaluate
-// to [-k_n, k_n]-wide enclosures (issue 50, item 2). The domain is on line n + 3.
+// to [-k_n, k_n]-wide enclosures, which must be refused. The domain is on line n + 3.
 std::string squared_constants(int n, bool periodic) {
   std::string t = "robot T\nconstant k0 = 1.1\n";
   for (int i = 1; i <= n; ++i)
