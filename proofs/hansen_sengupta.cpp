@@ -42,6 +42,40 @@ EvalStatus mixed_jacobian(ModelEvaluator& ev, const Box& box, const std::vector<
   return EvalStatus::Defined;
 }
 
+// w.f0 = f(U, w̌) ∩ (f(ǔ, w̌) + ∂_u f(box)·(U − ǔ)), from the Jacobians mixed_jacobian left.
+template <class I>
+bool centred_meet(ModelEvaluator& ev, const Box& box, const std::vector<int>& unknowns,
+                  HsWorkspace& ws, HsArrays<I>& w) {
+  using namespace iops;
+  const Model& m = ev.model();
+  const int n = m.n();
+  std::vector<int> params;
+  for (int v = 0; v < int(m.vars.size()); ++v)
+    if (std::find(unknowns.begin(), unknowns.end(), v) == unknowns.end()) params.push_back(v);
+  Box centre = ws.mid_box;
+  std::vector<double> umid(params.size());
+  for (size_t k = 0; k < params.size(); ++k) {
+    umid[k] = box[params[k]].mid();
+    if (!std::isfinite(umid[k])) return false;
+    centre[params[k]].set_point(umid[k]);
+  }
+  if (ev.equations(centre, w.fc) != EvalStatus::Defined) return false;
+  jacobian_columns(m, w.Jx, w.Jq, params, w.Jp);
+  I t;
+  for (int i = 0; i < n; ++i) {
+    for (size_t k = 0; k < params.size(); ++k) {
+      assign(t, box[params[k]]);
+      sub_d(t, umid[k]);
+      mul_into(t, w.Jp(i, int(k)));
+      add_to(w.fc[i], t);
+    }
+    // Both enclose f_i(U, w̌): they meet. An empty meet is rounding noise, never a proof.
+    if (!meet_of(t, w.f0[i], w.fc[i])) return false;
+    w.f0[i] = t;
+  }
+  return true;
+}
+
 template <class I>
 HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<Interval>& image,
                HsWorkspace& ws, HsArrays<I>& w, bool in_pose, const std::vector<int>* unknowns) {
@@ -64,6 +98,7 @@ HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<I
                        : in_pose ? ev.jacobian_x(box, w.J)
                                  : ev.jacobian_q(box, w.J);
   if (J != EvalStatus::Defined) return HsStatus::Failed;
+  if (unknowns && !centred_meet(ev, box, *unknowns, ws, w)) return HsStatus::Failed;
   if (!approximate_inverse(w.J, ws.C)) return HsStatus::Failed;
   if (w.A.rows() != n) w.A = Matrix<I>(n, n);
   w.b.resize(n);

@@ -27,6 +27,8 @@ struct HsArrays {
   std::vector<I> f0, b, q, y;  // q: the unknowns' box, y: their image
   Matrix<I> J, A;
   Matrix<I> Jx, Jq;  // a chart of mixed unknowns: both Jacobians, J from their columns
+  Matrix<I> Jp;      // and the parameters' columns, for the centred f(U, w̌)
+  std::vector<I> fc;
   I t1, t2;
 };
 
@@ -46,7 +48,11 @@ struct HsWorkspace {
 // With `in_pose` the roles swap: the pose is unknown, the commands are the parameters and
 // Fx replaces Fq (the existence proof in x of cuspidality witnesses, core/aspects/cuspidality.h).
 // With `unknowns` (n variable indices, model order), those are the unknowns and the others
-// the parameters, whatever their kind (a chart of the counting, proofs/counting/chart.h).
+// the parameters, whatever their kind (a chart of the counting, proofs/counting/chart.h),
+// and f(U, w̌) is also enclosed in the centred form f(ǔ, w̌) + ∂_u f(box)·(U − ǔ) (mean
+// value theorem, ǔ the parameters' midpoint), then met with the natural one: a chart's U is
+// wide and the natural form of, say, (x − 8 cos q)² + (y − 8 sin q)² loses the tie between
+// cos and sin. (The solve's P1 keeps the natural form, which the certificates record.)
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
                          std::vector<Interval>& image, HsWorkspace& ws, bool in_pose = false,
                          const std::vector<int>* unknowns = nullptr);

@@ -323,10 +323,17 @@ class Counter {
       // z: U × the range of w (every w(u), u ∈ U, lies in it).
       Box z = c.box;
       for (int j = 0; j < n; ++j) z[chart.w[j]] = chart.w_range[j];
-      if (!c.solution) {
-        // The box becomes U × (the range of w within the domain): it holds every solution it
-        // held (they are on the graph), and its piece is the graph over U, with no face of W
-        // to cross but the domain's.
+      // The box keeps its W, met with the range (every solution of B is on the graph): the
+      // piece is the graph over {u ∈ U : w(u) ∈ W}, whose faces are constraints of the star
+      // test. (Growing the box to U × the range instead made it overlap its neighbours, the
+      // more so as the range is overestimated: on RRRRR ten times the adjacencies.)
+      std::vector<StarConstraint> faces;
+      bool inside = true;  // w(U) ⊆ W: the graph is over the whole of U
+      // A box contracted around its solutions touches them at its faces, tangentially where
+      // w has an extreme inside U: a face constraint there cannot be cleared. When the range
+      // is little wider than the box (no cut, only overestimation), the box grows to it
+      // within the domain instead, and only the domain's faces remain.
+      if (!c.solution && small_growth(c.box, chart)) {
         for (int j = 0; j < n; ++j) {
           const int v = chart.w[j];
           double lo = chart.w_range[j].lo_down(), hi = chart.w_range[j].hi_up();
@@ -337,11 +344,26 @@ class Counter {
           c.box[v].set_hull(lo, hi);
         }
       }
-      bool inside = true;  // w(U) ⊆ W: the graph is over the whole of U
-      for (int j = 0; j < n; ++j)
-        inside = inside && c.box[chart.w[j]].contains(chart.w_range[j]);
+      for (int j = 0; j < n; ++j) {
+        const int v = chart.w[j];
+        const double lo = std::max(c.box[v].lo_down(), chart.w_range[j].lo_down());
+        const double hi = std::min(c.box[v].hi_up(), chart.w_range[j].hi_up());
+        if (!(lo <= hi)) {  // no solution in the box
+          for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+          return;
+        }
+        if (!c.solution) c.box[v].set_hull(lo, hi);
+        if (chart.w_range[j].lo_down() < c.box[v].lo_down()) {
+          faces.push_back({StarConstraint::WLower, j, 1, c.box[v].lo_down()});
+          inside = false;
+        }
+        if (chart.w_range[j].hi_up() > c.box[v].hi_up()) {
+          faces.push_back({StarConstraint::WUpper, j, 1, c.box[v].hi_up()});
+          inside = false;
+        }
+      }
       std::vector<Interval> zv;
-      const bool zdefined = fg_.values(ev_, z, zv);
+      const bool zdefined = fg_.values(ev_, c.box, zv);  // the piece lies in the box
       bool certain = zdefined;
       for (const Interval& x : zv) certain = certain && (x.certainly_pos() || x.certainly_neg());
       if (certain && inside) {
@@ -368,16 +390,6 @@ class Counter {
         for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
         return;
       }
-      // The faces of the domain that the graph crosses: constraints of every piece.
-      std::vector<StarConstraint> faces;
-      for (int j = 0; j < n; ++j) {
-        // The box is the range clipped to the domain: where it was clipped, the graph leaves.
-        const Interval& W = c.box[chart.w[j]];
-        if (chart.w_range[j].lo_down() < W.lo_down())
-          faces.push_back({StarConstraint::WLower, j, 1, W.lo_down()});
-        if (chart.w_range[j].hi_up() > W.hi_up())
-          faces.push_back({StarConstraint::WUpper, j, 1, W.hi_up()});
-      }
       for (uint32_t s : classes) {
         if (zdefined && class_empty(zv, s)) {
           c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
@@ -403,8 +415,23 @@ class Counter {
       return;
     }
     // No chart: the box is bisected whatever else is proved of it (a point would only show
-    // its piece nonempty, which the solution boxes already do for the lower bound).
+    // its piece nonempty, which the solution boxes already do for the lower bound), across
+    // the chart likeliest to hold on its halves.
+    const int cut = chart_split_variable(ev_, c.box, domain_width_);
+    if (cut >= 0) c.split_in = {cut};
     for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
+  }
+
+  // The chart's range sticks out of the box by at most the box's width on each side.
+  bool small_growth(const Box& box, const Chart& chart) const {
+    for (size_t j = 0; j < chart.w.size(); ++j) {
+      const Interval& W = box[chart.w[j]];
+      const double margin = W.width_up();
+      if (chart.w_range[j].lo_down() < W.lo_down() - margin ||
+          chart.w_range[j].hi_up() > W.hi_up() + margin)
+        return false;
+    }
+    return true;
   }
 
   const PieceRec* piece(int32_t cell, uint32_t cls) const {
