@@ -7,9 +7,18 @@
 
 namespace aspects {
 
+std::string count_line(const Model& model, const AspectsResult& r) {
+  std::string line = "aspects: at least " + std::to_string(r.separation.lower_bound) +
+                     " (certified lower bound";
+  if (!model.user_factors.empty()) line += ", resting on the model's `factor` statements";
+  return line + "; no upper bound: `aspects count` seeks one)";
+}
+
 void print_solve_report(const SolveOptions& o, const Model& model, const AspectsResult& r) {
   std::printf("robot %s  eps %g  precision %ld bits  tau %g  bisect %s\n", model.name.c_str(),
               o.eps, o.prec, o.tau, o.bisect.c_str());
+  // The number of aspects first, so that nobody reads the CSNC count below as that number.
+  std::printf("%s\n", count_line(model, r).c_str());
   if (r.complete())
     std::printf("boxes: %d (%ld solution, %ld undecided)\n", r.boxes.size(), r.solutions,
                 r.undecided);

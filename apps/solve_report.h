@@ -12,7 +12,11 @@
 
 namespace aspects {
 
-// The summary on stdout: options, boxes, links, CSNCs, the lower bound, the witnesses.
+// The line that states the number of aspects a solve certifies: a lower bound only.
+std::string count_line(const Model& model, const AspectsResult& r);
+
+// The summary on stdout: options, the count line, boxes, links, CSNCs, the lower bound,
+// the witnesses.
 void print_solve_report(const SolveOptions& o, const Model& model, const AspectsResult& r);
 
 // How a stopped run can go on: the exact command that resumes it from its checkpoint, or

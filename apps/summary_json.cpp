@@ -160,6 +160,11 @@ json summary_json(const Model& m, const SolveOptions& o, const AspectsResult& r,
   add_run(j, m, o);
   add_hashes(j, m, hashes);
   add_time_and_phases(j, r);
+  // The number of aspects, as `aspects count --json` states it: a solve certifies a lower
+  // bound only (the separated one, Section 4.4.2).
+  j["lower_bound"] = r.separation.lower_bound;
+  j["upper_bound"] = nullptr;
+  j["exact"] = false;
   j["boxes"] = boxes_json(r);
   j["links"] = {{"neighbor", r.neighbor_count}, {"certified", r.certified_links.size()}};
   j["constraints"] = m.constraints.size();

@@ -11,8 +11,12 @@ check_cert=$3
 out=$(mktemp -d)
 holder=
 trap 'if [ -n "$holder" ]; then kill "$holder" 2>/dev/null || true; fi; rm -rf "$out"' EXIT
-"$aspects" solve "$model" --eps 0.1 --out "$out" --quiet
 fail() { echo "solve_outputs: $*" >&2; exit 1; }
+# The number of aspects comes first, right after the run's settings, as a lower bound.
+"$aspects" solve "$model" --eps 0.1 --no-cert | sed -n 2p | grep -qx \
+  'aspects: at least 4 (certified lower bound; no upper bound: `aspects count` seeks one)' ||
+  fail "the count line is not the second line of solve's report"
+"$aspects" solve "$model" --eps 0.1 --out "$out" --quiet
 [ -f "$out/summary.json" ] || fail "no summary.json"
 [ -f "$out/boxes.csv" ] || fail "no boxes.csv"
 [ -f "$out/aspects.cert" ] || fail "no aspects.cert"
@@ -29,6 +33,7 @@ for k in ["neighbor", "certified"]:
     assert k in s["links"], k
 for k in ["count", "filtered", "separated_lower_bound", "sizes"]:
     assert k in s["csncs"], k
+assert s["lower_bound"] == 4 and s["upper_bound"] is None and s["exact"] is False, s
 assert s["robot"] == "PRRP" and s["csncs"]["filtered"] == 4 and s["csncs"]["separated_lower_bound"] == 4
 assert s["factors"][0]["origin"] == "det Fx", s["factors"]
 # The bound is the sum of its classes' components, each class a sign per factor.
