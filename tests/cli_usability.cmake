@@ -15,3 +15,8 @@ aspects_cli_test(unknown_subcommand_listed 2
 add_test(NAME cli.help_and_short_options
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/cli_help.sh ${_aspects} ${ASPECTS_TEST_ROBOTS_DIR}/prrp.robot)
 set_tests_properties(cli.help_and_short_options PROPERTIES TIMEOUT 60 LABELS cli)
+# check_cert DIR: the certificate `aspects solve --out DIR` wrote there.
+add_test(NAME cli.check_cert_directory
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/check_cert_directory.sh ${_aspects}
+                 $<TARGET_FILE:check_cert> ${ASPECTS_TEST_ROBOTS_DIR}/prrp.robot)
+set_tests_properties(cli.check_cert_directory PROPERTIES TIMEOUT 60 LABELS cli)
