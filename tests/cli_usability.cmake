@@ -20,3 +20,11 @@ add_test(NAME cli.check_cert_directory
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/check_cert_directory.sh ${_aspects}
                  $<TARGET_FILE:check_cert> ${ASPECTS_TEST_ROBOTS_DIR}/prrp.robot)
 set_tests_properties(cli.check_cert_directory PROPERTIES TIMEOUT 60 LABELS cli)
+# Model errors at the use, in the user's words; a file that cannot be opened says why,
+# without a position (before: "4:9 ... (found under 'sqr')" and ":0:0: cannot open model file").
+aspects_cli_test(model_periodic_at_use 2
+                 "^.*bad_periodic_use\\.robot:6:14: error: periodic variable 'q' must appear only inside sin\\(\\) or cos\\(\\); 'q\\^2' uses it outside them$" --
+                 ${_aspects} solve ${_models}/bad_periodic_use.robot)
+aspects_cli_test(model_file_says_why 2
+                 "^/nonexistent/none\\.robot: error: cannot open model file: No such file or directory$" --
+                 ${_aspects} info /nonexistent/none.robot)
