@@ -28,3 +28,7 @@ aspects_cli_test(model_periodic_at_use 2
 aspects_cli_test(model_file_says_why 2
                  "^/nonexistent/none\\.robot: error: cannot open model file: No such file or directory$" --
                  ${_aspects} info /nonexistent/none.robot)
+# The man pages made from --help by help2man (cmake/man_pages.cmake), present after a build.
+add_test(NAME cli.man_pages
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/man_page.sh ${PROJECT_BINARY_DIR}/man ${_aspects})
+set_tests_properties(cli.man_pages PROPERTIES TIMEOUT 30 LABELS cli)
