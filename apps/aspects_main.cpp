@@ -8,6 +8,7 @@
 
 #include "aspects_version.h"
 #include "checkpoint.h"
+#include "cli_usage.h"
 #include "count_command.h"
 #include "model/model.h"
 #include "model/model_info.h"
@@ -65,13 +66,13 @@ void add_solve(CLI::App& app, Commands& c) {
   auto* solve = c.solve =
       app.add_subcommand("solve", "Compute certified CSNCs and the lower bound on aspects");
   solve->add_option("MODEL", so.model_path, "robot model file; default: the embedded RRRRR five-bar");
-  solve->add_option("--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1)
+  solve->add_option("-e,--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1)
       ->check(kFiniteNumber);
   solve->add_option("--prec", so.prec, "MPFI precision in bits (>= 24)")->default_val(53);
   solve->add_option("--tau", so.tau, "inflation factor of the Hansen-Sengupta iteration (>= 1)")->default_val(1.01)
       ->check(kFiniteNumber);
-  solve->add_option("--out", so.out_dir, "write summary.json, boxes.csv and aspects.cert here");
-  solve->add_option("--threads", so.threads, "worker threads (0: one per core); results do not depend on it")
+  solve->add_option("-o,--out", so.out_dir, "write summary.json, boxes.csv and aspects.cert here");
+  solve->add_option("-j,--threads", so.threads, "worker threads (0: one per core); results do not depend on it")
       ->default_val(0);
   solve->add_flag("--progress", so.progress, "progress on stderr even when it is not a terminal");
   auto* no_cert = solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
@@ -97,8 +98,7 @@ void add_solve(CLI::App& app, Commands& c) {
                     "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose "
                     "where it blocked the proof, else round robin); default: the model's "
                     "`bisect` statement, else round-robin")
-      ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}))
-      ->default_val("round-robin");
+      ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}));
   solve->add_option("--time-limit", so.time_limit,
                     "stop the search after SECONDS and write a partial result (exit 3)")
       ->check(kFiniteNumber);
@@ -160,7 +160,9 @@ void add_plot(CLI::App& app, Commands& c) {
       "plot", "Draw a result: CSNCs on the pose plane (2 pose variables) or in 3-D (3)");
   plot->add_option("RESULT_DIR", po.result_dir, "directory written by `aspects solve --out`")
       ->required();
-  plot->add_option("--out", po.out, "PNG to write (default: RESULT_DIR/aspects.png)");
+  plot->add_option("-o,--out", po.out,
+                   "figure to write, PNG, PDF or SVG by its extension (.png, .pdf, .svg; "
+                   "default: RESULT_DIR/aspects.png)");
   plot->add_option("--path", po.path, "draw the path of this file (`aspects path --json` output)");
 }
 
@@ -169,7 +171,7 @@ void add_count(CLI::App& app, Commands& c) {
   auto* count = c.count = app.add_subcommand(
       "count", "Certified number of aspects (lower = upper), or certified bounds on it");
   count->add_option("MODEL", co.model_path, "robot model file; default: the embedded RRRRR five-bar");
-  count->add_option("--eps", co.eps, "epsilon of the first cover (refinement is adaptive after it)")
+  count->add_option("-e,--eps", co.eps, "epsilon of the first cover (refinement is adaptive after it)")
       ->check(kFiniteNumber)
       ->default_val(0.5);
   count->add_option("--min-width", co.min_width,
@@ -179,7 +181,7 @@ void add_count(CLI::App& app, Commands& c) {
   count->add_option("--time-limit", co.time_limit,
                     "stop after SECONDS and print the bounds reached (exit 3)")
       ->check(kFiniteNumber);
-  count->add_option("--threads", co.threads, "threads of the first cover's search (0: one per core)")
+  count->add_option("-j,--threads", co.threads, "threads of the first cover's search (0: one per core)")
       ->default_val(0);
   count->add_flag("--json", co.json, "print one JSON object");
   count->add_flag("--progress", co.progress, "progress on stderr even when it is not a terminal");
@@ -192,7 +194,7 @@ void add_verify(CLI::App& app, Commands& c) {
                 "summary are of the same run (hashes and counts)");
   verify->add_option("RESULT_DIR", vo.result_dir, "directory written by `aspects solve --out`")
       ->required();
-  verify->add_option("--threads", vo.threads, "check_cert's threads (0: its default)")
+  verify->add_option("-j,--threads", vo.threads, "check_cert's threads (0: its default)")
       ->check(CLI::NonNegativeNumber)
       ->default_val(0);
   verify->add_flag("--json", vo.json, "print one JSON object");
@@ -301,8 +303,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "aspects: " << e.what() << "\n(run 'aspects --help' for usage)\n";
-    return 2;
+    return report_parse_error(app, e, argc, argv);
   }
   commands.solve_options.program = argv[0];  // a stopped run prints the command that resumes it
   const Launch launch = detect_launch();

@@ -5,7 +5,10 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <openssl/crypto.h>
 
@@ -74,6 +77,29 @@ std::string json_line(const Verdict& v) {
   return j.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
 }
 
+// The file to check for FILE as given: a result directory (`aspects solve --out DIR`) stands
+// for the certificate solve wrote in it. Empty, with the reason, when there is not exactly
+// one.
+struct CertificateFile {
+  std::string path;
+  std::string problem;
+};
+CertificateFile certificate_file(const std::string& given) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(given, ec)) return {given, ""};
+  std::vector<std::string> found;
+  for (const char* name : {"aspects.cert", "aspects.cert.zst"})
+    if (fs::is_regular_file(fs::path(given) / name, ec))
+      found.push_back((fs::path(given) / name).string());
+  if (found.size() == 1) return {found[0], ""};
+  if (found.empty())
+    return {"", given + " is a directory with no certificate in it (aspects.cert or "
+                "aspects.cert.zst, as `aspects solve --out DIR` writes): name the certificate "
+                "file"};
+  return {"", given + " holds both aspects.cert and aspects.cert.zst: name the one to check"};
+}
+
 // A usage error: said on stderr, exit 2.
 int usage(const std::string& why) {
   std::fprintf(stderr, "check_cert: %s\n", why.c_str());
@@ -95,7 +121,7 @@ int check_main(int argc, char** argv) {
   app.add_flag("--json", json, "print the verdict as one JSON object (for scripts)");
   app.add_flag("--trust-factors", o.trust_factors,
                "accept a lower bound that rests on user-supplied factors");
-  app.add_option("--threads", o.threads,
+  app.add_option("-j,--threads", o.threads,
                  "run the interval proofs and the sweep of M on N threads (0: one per core); "
                  "the verdict, the record it names and its reason do not depend on N")
       ->type_name("N")
@@ -114,7 +140,10 @@ int check_main(int argc, char** argv) {
   app.add_flag("--print", o.print,
                "print every record as text on stdout while checking it (binary records of "
                "format 3 with their ends decoded), then the verdict");
-  app.add_option("FILE", path, "the certificate (text, or zstd-compressed)")->required();
+  app.add_option("FILE", path,
+                 "the certificate (text, or zstd-compressed), or the directory `aspects solve "
+                 "--out` wrote it in")
+      ->required();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -125,21 +154,25 @@ int check_main(int argc, char** argv) {
     std::fprintf(stderr, "check_cert: %s\n(run 'check_cert --help' for usage)\n", e.what());
     return int(Outcome::Malformed);
   }
+  const CertificateFile file = certificate_file(path);
   if (ranks::size() > 1) {
     if (o.trusted_only) return usage("--trusted-only checks in one process: run it without mpirun");
     const std::string shaping = std::string(o.trust_factors ? "t" : "-") + (json ? "j" : "-");
-    if (const int r = ranks::differing_rank(path, shaping); r >= 0)
+    if (const int r = ranks::differing_rank(file.path, shaping); r >= 0)
       return usage("rank " + std::to_string(r) + " has another executable, certificate or "
                    "options than rank 0 (every rank reads the whole certificate)");
     o.quiet = o.quiet || ranks::rank() > 0;
     o.print = o.print && ranks::rank() == 0;
   }
   Verdict v;
-  if (FILE* f = std::fopen(path.c_str(), "rb")) {
+  if (!file.problem.empty()) {
+    v.outcome = Outcome::Malformed;
+    v.reason = file.problem;
+  } else if (FILE* f = std::fopen(file.path.c_str(), "rb")) {
     v = check_certificate(f, o);
   } else {
     v.outcome = Outcome::Malformed;
-    v.reason = "cannot open " + path;
+    v.reason = "cannot open " + file.path + ": " + std::strerror(errno);
   }
   if (ranks::rank() == 0) std::printf("%s\n", json ? json_line(v).c_str() : text_line(v).c_str());
   return int(v.outcome);

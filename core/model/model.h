@@ -12,18 +12,23 @@
 
 namespace aspects {
 
-// A model error, printed as "FILE:LINE:COL: error: MESSAGE".
+// A model error, printed as "FILE:LINE:COL: error: MESSAGE" (or "FILE: error: MESSAGE").
 class ModelError : public std::runtime_error {
  public:
+  // Line 0: an error of the whole file (it cannot be opened), said without a position.
   ModelError(const std::string& file, int line, int col, const std::string& msg)
-      : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(col) +
+      : std::runtime_error(file +
+                           (line > 0 ? ":" + std::to_string(line) + ":" + std::to_string(col)
+                                     : std::string()) +
                            ": error: " + msg),
-        line_(line), col_(col), message_(msg) {}
+        file_(file), line_(line), col_(col), message_(msg) {}
+  const std::string& file() const { return file_; }
   int line() const { return line_; }
   int col() const { return col_; }
   const std::string& message() const { return message_; }
 
  private:
+  std::string file_;
   int line_, col_;
   std::string message_;
 };

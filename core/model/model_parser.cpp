@@ -3,6 +3,8 @@
 // ModelError naming the file, line and column.
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -236,7 +238,7 @@ class Parser {
       int lhs = expr();
       expect_punct("=");
       int rhs = expr();
-      int node = m_.dag.binary(Op::Sub, lhs, rhs);
+      int node = written(m_.dag.binary(Op::Sub, lhs, rhs), start);
       if (m_.dag.is_constant(node)) fail(at, "equation does not depend on any variable");
       m_.equations.push_back(node);
       m_.equation_text.push_back(source_text(start, p_));
@@ -244,7 +246,7 @@ class Parser {
     } else if (k == "factor") {
       const Token& at = peek();
       size_t start = p_;
-      int node = expr();
+      int node = written(expr(), start);
       if (m_.dag.is_constant(node)) fail(at, "factor does not depend on any variable");
       m_.user_factors.push_back(node);
       m_.user_factor_lines.push_back(at.line);
@@ -388,6 +390,7 @@ class Parser {
       return f;
     }
     const Token& at = peek();
+    const size_t start = p_;
     int lhs = expr();
     if (!is_relation())
       fail(peek(), "expected a comparison ('>=', '<=', '>' or '<'), found " + describe(peek()));
@@ -397,7 +400,8 @@ class Parser {
     n.kind = FormulaNode::Atom;
     n.strict = rel == ">" || rel == "<";
     bool greater = rel[0] == '>';
-    n.expr = greater ? m_.dag.binary(Op::Sub, lhs, rhs) : m_.dag.binary(Op::Sub, rhs, lhs);
+    n.expr = written(greater ? m_.dag.binary(Op::Sub, lhs, rhs) : m_.dag.binary(Op::Sub, rhs, lhs),
+                     start);
     if (m_.dag.is_constant(n.expr)) fail(at, "comparison does not depend on any variable");
     m_.constraint_atoms.push_back(n.expr);
     m_.formula.push_back(n);
@@ -412,11 +416,12 @@ class Parser {
     // Recursion (here and in differentiation) is bounded by the nesting and depth of
     // expressions: refuse absurd ones rather than overflow the stack.
     const Token& at = peek();
+    const size_t start = p_;
     if (++nesting_ > kMaxNesting) fail(at, "expression nested too deeply");
     int a = term();
     while (is_punct("+") || is_punct("-")) {
       Op op = next().text == "+" ? Op::Add : Op::Sub;
-      a = m_.dag.binary(op, a, term());
+      a = written(m_.dag.binary(op, a, term()), start);
       if (m_.dag.depth(a) > kMaxDepth) fail(at, "expression too long (depth over 1000)");
     }
     // Also without a sum: sin(a) where the name a is itself deep, a chain of lets.
@@ -427,10 +432,11 @@ class Parser {
   // term := unary (('*'|'/') unary)*
   int term() {
     const Token& at = peek();
+    const size_t start = p_;
     int a = unary();
     while (is_punct("*") || is_punct("/")) {
       Op op = next().text == "*" ? Op::Mul : Op::Div;
-      a = m_.dag.binary(op, a, unary(), /*keep_operands=*/true);
+      a = written(m_.dag.binary(op, a, unary(), /*keep_operands=*/true), start);
       if (m_.dag.depth(a) > kMaxDepth) fail(at, "expression too long (depth over 1000)");
     }
     return a;
@@ -438,9 +444,10 @@ class Parser {
   // unary := '-' unary | '+' unary | power
   int unary() {
     if (is_punct("-")) {
+      const size_t start = p_;
       const Token& at = next();
       if (++nesting_ > kMaxNesting) fail(at, "expression nested too deeply");
-      int a = m_.dag.unary(Op::Neg, unary());
+      int a = written(m_.dag.unary(Op::Neg, unary()), start);
       --nesting_;
       return a;
     }
@@ -455,6 +462,7 @@ class Parser {
   }
   // power := primary ['^' ['-'] INTEGER]
   int power() {
+    const size_t start = p_;
     int a = primary();
     if (is_punct("^")) {
       ++p_;
@@ -469,11 +477,12 @@ class Parser {
       if (t.text.size() > 4) fail(t, "exponent " + t.text + " is too large");
       ++p_;
       int k = std::stoi(t.text);
-      a = m_.dag.pow(a, neg ? -k : k);
+      a = written(m_.dag.pow(a, neg ? -k : k), start);
     }
     return a;
   }
   int primary() {
+    const size_t start = p_;
     const Token& t = peek();
     if (t.kind == Tok::Number) {
       ++p_;
@@ -502,7 +511,7 @@ class Parser {
       expect_punct("(");
       int a = expr();
       expect_punct(")");
-      return m_.dag.unary(uf->second, a);
+      return written(m_.dag.unary(uf->second, a), start);
     }
     if (t.text == "min" || t.text == "max") {
       expect_punct("(");
@@ -510,7 +519,7 @@ class Parser {
       expect_punct(",");
       int b = expr();
       expect_punct(")");
-      return m_.dag.binary(t.text == "min" ? Op::Min : Op::Max, a, b);
+      return written(m_.dag.binary(t.text == "min" ? Op::Min : Op::Max, a, b), start);
     }
     if (is_punct("(")) fail(t, "unknown function '" + t.text + "'");
     auto it = names_.find(t.text);
@@ -561,20 +570,40 @@ class Parser {
         bool wraps = n.op == Op::Sin || n.op == Op::Cos;
         bool passes = n.op == Op::Add || n.op == Op::Sub || n.op == Op::Neg;
         if (wraps || passes || n.op == Op::Var || n.op == Op::Const) continue;
-        for (int c : {n.a, n.b}) {
-          if (c >= 0 && bare[c])
-            fail(var_tokens_[vi], "periodic variable '" + m_.vars[vi].name +
-                                      "' must appear only inside sin() or cos() (found under '" +
-                                      op_name(n.op) + "')");
-        }
+        for (int c : {n.a, n.b})
+          if (c >= 0 && bare[c]) fail_periodic_use(vi, id, live);
       }
       // An equation or factor that is itself a sum with the bare variable is not periodic.
-      for (int root : roots) {
-        if (bare[root])
-          fail(var_tokens_[vi], "periodic variable '" + m_.vars[vi].name +
-                                    "' must appear only inside sin() or cos()");
-      }
+      for (int root : roots)
+        if (bare[root]) fail_periodic_use(vi, root, live);
     }
+  }
+
+  // The periodic variable vi is used outside sin() and cos() by `node`: said at the text the
+  // user wrote there, the innermost written expression that holds the node (the DAG may
+  // make a node of its own, x^3 as sqr(x)*x), rather than at the variable's declaration.
+  [[noreturn]] void fail_periodic_use(size_t vi, int node, const std::vector<int>& live) {
+    const Dag& d = m_.dag;
+    std::vector<char> holds(size_t(d.size()), 0);
+    for (int id : live) {  // children first
+      const Node& n = d.node(id);
+      holds[size_t(id)] = id == node || (n.a >= 0 && holds[size_t(n.a)]) ||
+                          (n.b >= 0 && holds[size_t(n.b)]);
+      auto w = written_.find(id);
+      if (holds[size_t(id)] && w != written_.end())
+        fail(toks_[w->second.first],
+             "periodic variable '" + m_.vars[vi].name +
+                 "' must appear only inside sin() or cos(); '" +
+                 source_text(w->second.first, w->second.second) + "' uses it outside them");
+    }
+    fail(var_tokens_[vi], "periodic variable '" + m_.vars[vi].name +
+                              "' must appear only inside sin() or cos()");
+  }
+
+  // Records where the user first wrote `node`: tokens [from, p_).
+  int written(int node, size_t from) {
+    written_.emplace(node, std::make_pair(from, p_));
+    return node;
   }
 
   // Each '(' token's matching ')' (toks_.size() - 1 when unmatched), and how many
@@ -633,6 +662,7 @@ class Parser {
   }
   std::vector<Token> var_tokens_;
   std::vector<Token> equation_tokens_;
+  std::map<int, std::pair<size_t, size_t>> written_;  // node: tokens of its first text
 };
 
 }  // namespace
@@ -667,8 +697,12 @@ Model load_model(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw ModelError(path, 0, 0, "cannot open model file: it is a directory");
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(path, 0, 0, "cannot open model file");
+  if (!in)
+    throw ModelError(path, 0, 0,
+                     std::string("cannot open model file") +
+                         (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
   std::stringstream ss;
   ss << in.rdbuf();
   return parse_model(ss.str(), path);

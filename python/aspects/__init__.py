@@ -1,10 +1,11 @@
 """Certified generalized aspects of parallel robots, from Python.
 
     import aspects
-    model = aspects.Model.from_file("robots/prrp.robot")
+    model = aspects.Model.from_file("robots/prrp.robot")   # or solve("robots/prrp.robot")
     result = aspects.solve(model, eps=0.1)
     result.summary["csncs"]["count"], result.lower_bound
     result.query([0.5]); result.path([0.2], [0.8]); result.plot("prrp.png")
+    result.query(np.linspace(0, 1, 50).reshape(-1, 1)).count   # one row a pose
 
 The computation is the command line's (`aspects solve`), in the compiled module
 `aspects._aspects`; this package adds the progress display, the Result class and the
@@ -13,14 +14,16 @@ figures (aspects.plotting, shared with `aspects plot`).
 import os as _os
 
 from ._aspects import (  # noqa: F401
-    Model, ModelError, ResultError,
+    __version__, Model, ModelError, ResultError,
     SOLUTION, UNDECIDED_NO_EXISTENCE, UNDECIDED_SINGULAR, UNDECIDED_CONSTRAINT, UNEXPLORED,
 )
 from . import _aspects
 from .progress import progress_callback as _progress_callback
+from .answers import Command, PathResult, QueryBatch, QueryResult, Waypoint  # noqa: F401
 from .result import Result
 
-__all__ = ["Model", "ModelError", "ResultError", "Result", "Interrupted", "solve", "load"]
+__all__ = ["Model", "ModelError", "ResultError", "Result", "Interrupted", "solve", "load",
+           "QueryResult", "QueryBatch", "Command", "PathResult", "Waypoint", "__version__"]
 
 
 class Interrupted(KeyboardInterrupt):
@@ -52,7 +55,8 @@ def _number(name, value, kind=float):
 def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *,
           max_boxes=None, prec=53, tau=1.01, all_links=False, bisect=None, certificate=True,
           compress_certificate=False):
-    """Solve `model` (an aspects.Model) as `aspects solve` does; returns a Result.
+    """Solve `model` as `aspects solve` does; returns a Result. `model`: an aspects.Model,
+    or the path of a .robot file (str or os.PathLike; read as Model.from_file reads it).
 
     threads: 0 is one per core (the result does not depend on it). time_limit (seconds)
     and max_boxes stop the search early: the result is then partial (result.complete is
@@ -68,8 +72,11 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     dict (processed, solutions, undecided, decided share, seconds, phases) about every
     0.1 s; an exception it raises stops the run and is raised here.
     """
+    if isinstance(model, (str, _os.PathLike)):
+        model = Model.from_file(_os.fspath(model))
     if not isinstance(model, Model):
-        raise TypeError(f"model must be an aspects.Model, got {type(model).__name__}")
+        raise TypeError(f"model must be an aspects.Model or the path of a .robot file, got "
+                        f"{type(model).__name__}")
     eps = _number("eps", eps)
     if not (eps > 0 and eps < float("inf")):
         raise ValueError(f"eps must be a positive number, got {eps}")

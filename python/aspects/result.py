@@ -6,6 +6,8 @@ import os
 import shutil
 import subprocess
 
+from .answers import PathResult, QueryBatch, QueryResult
+
 CSNC = collections.namedtuple("CSNC", "id size kept signs")
 CSNC.__doc__ = ("A CSNC: its number (by decreasing size), its boxes, whether the size-ratio "
                 "filter keeps it (a heuristic), the signs of the determinant factors on it.")
@@ -109,15 +111,44 @@ class Result:
 
     # ---------------------------------------------------------------- using it
     def query(self, pose):
-        """The certified commands of a pose, as `aspects query --json` prints them."""
-        return self._core._query(self._pose(pose, "pose"))
+        """The certified commands of a pose: a QueryResult (aspects.answers), whose
+        to_dict() is what `aspects query --json` prints. Given an N x n array of poses (one
+        a row), a QueryBatch: the answers as arrays, and each row's QueryResult."""
+        import numpy as np
+        try:
+            rows = not isinstance(pose, (str, bytes)) and np.ndim(pose) == 2
+        except ValueError:  # numpy refuses ragged rows
+            raise TypeError("poses must be an N x n array of numbers") from None
+        if rows:
+            return self._query_many(pose)
+        return QueryResult.from_dict(self._core._query(self._pose(pose, "pose")))
+
+    def _query_many(self, poses):
+        import numpy as np
+        try:
+            a = np.array(poses, dtype=float)
+        except (TypeError, ValueError):
+            raise TypeError("poses must be an N x n array of numbers") from None
+        names = self.pose_variables
+        if a.shape[1] != len(names):
+            raise ValueError(f"poses must have {len(names)} columns ({', '.join(names)}), "
+                             f"got {a.shape[1]}")
+        bad = np.argwhere(~np.isfinite(a))
+        if len(bad):
+            i, j = bad[0]
+            raise ValueError(f"poses[{i}]: {names[j]} = {a[i, j]} is not a finite number")
+        results = [QueryResult.from_dict(d) for d in self._core._query_many(a.tolist())]
+        commands = len(self.variables) - len(names)
+        return QueryBatch.from_results(a, results, commands)
 
     def path(self, start, goal, csnc=None):
-        """A certified singularity-free path, as `aspects path --json` prints it
-        (outcome "found" with waypoints, or why there is none)."""
+        """A certified singularity-free path: a PathResult (aspects.answers; outcome
+        "found" with its waypoints, or why there is none), whose to_dict() is what `aspects
+        path --json` prints."""
         if csnc is not None and (isinstance(csnc, bool) or not isinstance(csnc, int)):
             raise TypeError("csnc must be an integer")
-        return self._core._path(self._pose(start, "start"), self._pose(goal, "goal"), csnc)
+        return PathResult.from_dict(
+            self._core._path(self._pose(start, "start"), self._pose(goal, "goal"), csnc))
 
     def _pose(self, pose, what):
         """A pose as a list of floats, one finite number per pose variable (the C++ side
@@ -174,6 +205,8 @@ class Result:
         the pose plane; 3, in 3-D. `path`: a dict from path() or a file of `aspects path
         --json` output. Saved to `out` when given; returns the matplotlib Figure."""
         from . import plotting
+        if isinstance(path, PathResult):  # Result.path's answer
+            path = path.to_dict()
         if isinstance(path, (str, os.PathLike)):
             with open(path) as f:
                 path = json.load(f)

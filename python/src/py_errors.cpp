@@ -15,13 +15,8 @@ void bind_errors(pyb::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const ModelError& e) {
-      // what() is "FILE:LINE:COL: error: MESSAGE"; the file is what precedes the rest.
-      const std::string what = e.what();
-      const std::string tail = ":" + std::to_string(e.line()) + ":" + std::to_string(e.col()) +
-                               ": error: " + e.message();
-      pyb::object err = pyb::reinterpret_borrow<pyb::object>(model_error.ptr())(what);
-      err.attr("file") = what.size() >= tail.size() ? what.substr(0, what.size() - tail.size())
-                                                    : std::string();
+      pyb::object err = pyb::reinterpret_borrow<pyb::object>(model_error.ptr())(e.what());
+      err.attr("file") = e.file();
       err.attr("line") = e.line();
       err.attr("col") = e.col();
       err.attr("message") = e.message();

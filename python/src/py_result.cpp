@@ -170,6 +170,20 @@ void bind_result(pyb::module_& m) {
              return to_python(query_json(x, query_pose(r, ev, x), r));
            },
            pyb::arg("pose"))
+      .def("_query_many",
+           [](const PyResult& p, const std::vector<std::vector<double>>& poses) {
+             // One evaluator for every row; a bad row names its index.
+             const LoadedResult& r = *p.loaded;
+             ModelEvaluator ev(r.model);
+             pyb::list answers;
+             for (size_t i = 0; i < poses.size(); ++i) {
+               const std::string what = "poses[" + std::to_string(i) + "]";
+               std::vector<double> x = checked_pose(r, poses[i], what);
+               answers.append(to_python(query_json(x, query_pose(r, ev, x), r)));
+             }
+             return answers;
+           },
+           pyb::arg("poses"))
       .def("_path",
            [](const PyResult& p, const std::vector<double>& a, const std::vector<double>& b,
               std::optional<long> csnc) {

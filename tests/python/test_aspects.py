@@ -66,9 +66,12 @@ def test_model_error_carries_file_line_col():
     assert isinstance(e.value, ValueError)
 
 
-def test_model_missing_file():
-    with pytest.raises(aspects.ModelError, match=r"^/nonexistent/x\.robot:0:0: error: "):
+def test_model_missing_file_says_why():
+    with pytest.raises(aspects.ModelError) as e:
         aspects.Model.from_file("/nonexistent/x.robot")
+    assert str(e.value) == ("/nonexistent/x.robot: error: cannot open model file: "
+                            "No such file or directory")
+    assert (e.value.file, e.value.line, e.value.col) == ("/nonexistent/x.robot", 0, 0)
 
 
 def test_model_wrong_type():
@@ -152,12 +155,12 @@ def test_load_does_not_read_boxes_csv(rprpr, tmp_path):
 def test_query_and_path_equal_the_command_line(rprpr):
     cli_dir, _, r, _ = rprpr
     q = json.loads(cli("query", cli_dir, "--pose", "3,5", "--json").stdout)
-    assert r.query([3, 5]) == q
+    assert r.query([3, 5]).to_dict() == q
     assert q["outcome"] == "answered" and [a["csnc"] for a in q["answers"]] == [1]
     lo, hi = q["answers"][0]["command_lo"][0], q["answers"][0]["command_hi"][0]
     assert lo <= math.sqrt(34) <= hi and hi - lo < 1e-14  # q1 = |(3, 5)|
     p = json.loads(cli("path", cli_dir, "--from", "3,5", "--to", "4,2.5", "--json").stdout)
-    assert r.path((3.0, 5.0), np.array([4.0, 2.5])) == p
+    assert r.path((3.0, 5.0), np.array([4.0, 2.5])).to_dict() == p
     assert p["outcome"] == "found"
 
 
@@ -375,12 +378,12 @@ def test_subnormal_pose(rprpr, x1):
     cli_dir, _, r, _ = rprpr
     q = r.query([x1, 5])
     assert q["pose"] == [x1, 5.0]
-    assert q == json.loads(cli("query", cli_dir, "--pose", f"{x1!r},5", "--json",
-                               check=False).stdout)
+    assert q.to_dict() == json.loads(cli("query", cli_dir, "--pose", f"{x1!r},5", "--json",
+                                         check=False).stdout)
     p = r.path([x1, 5], [3, 5])
     assert p["from"] == [x1, 5.0]
-    assert p == json.loads(cli("path", cli_dir, "--from", f"{x1!r},5", "--to", "3,5", "--json",
-                               check=False).stdout)
+    assert p.to_dict() == json.loads(cli("path", cli_dir, "--from", f"{x1!r},5", "--to", "3,5",
+                                         "--json", check=False).stdout)
 
 
 def test_bad_csnc(rprpr):
@@ -415,8 +418,8 @@ def test_load_not_a_result(tmp_path):
 def test_bad_solve_arguments(kw, error):
     with pytest.raises(error):
         aspects.solve(aspects.Model.from_file(PRRP), **kw)
-    with pytest.raises(TypeError):
-        aspects.solve("robots/prrp.robot")
+    with pytest.raises(TypeError, match="aspects.Model or the path of a .robot file"):
+        aspects.solve(42)
 
 
 # ------------------------------------------------------------------------------ plots
@@ -431,7 +434,7 @@ def test_result_plot_and_cli_plot(rprpr, tmp_path):
     fig = r.plot(str(tmp_path / "py.png"), path=path)
     assert is_png(tmp_path / "py.png")
     assert fig.axes[0].get_xlabel() == "x1" and fig.axes[0].get_ylabel() == "x2"
-    (tmp_path / "path.json").write_text(json.dumps(path))
+    (tmp_path / "path.json").write_text(json.dumps(path.to_dict()))
     out = cli("plot", cli_dir, "--out", str(tmp_path / "cli.png"), "--path",
               str(tmp_path / "path.json"))
     assert out.stdout == f"wrote {tmp_path / 'cli.png'}\n"
@@ -500,3 +503,94 @@ def test_csnc_signs_are_decided_by_any_of_its_boxes():
             assert decided_here == ({s} if s != 0 else set()), (c, k, decided_here)
             straddling_first += int(box_signs[0, k] == 0 and s != 0)
     assert straddling_first > 0  # the case the test is about occurs here
+
+
+# ------------------------------------------------------------------------------ issue 51
+def test_version_is_the_programs():
+    assert aspects.__version__ == cli("--version").stdout.split()[1]
+
+
+def test_solve_takes_a_path(tmp_path):
+    # A str or os.PathLike is read as Model.from_file reads it (it was a TypeError).
+    import pathlib
+    by_model = aspects.solve(aspects.Model.from_file(PRRP), eps=0.2)
+    for given in (PRRP, pathlib.Path(PRRP)):
+        r = aspects.solve(given, eps=0.2)
+        assert r.robot == "PRRP" and r.lower_bound == by_model.lower_bound == 4
+        assert np.array_equal(r.ids, by_model.ids)
+    with pytest.raises(aspects.ModelError, match="cannot open model file: No such file"):
+        aspects.solve(str(tmp_path / "none.robot"))
+
+
+def test_model_shows_variables_domains_equations():
+    m = aspects.Model.from_file(RPRPR)
+    assert m.variables == ["x1", "x2", "q1", "q2"]
+    assert m.domains == {"x1": (-20.0, 20.0), "x2": (-20.0, 20.0), "q1": (2.0, 6.0),
+                         "q2": (4.0, 9.0)}
+    assert list(m.domains) == m.variables  # model order
+    assert m.equations == ["x1^2 + x2^2 - q1^2 = 0", "(x1 - 9)^2 + x2^2 - q2^2 = 0"]
+    assert m.periodic == [] and m.factors == [] and m.constraints == [] and m.bisect == ""
+    assert repr(m) == (f"<aspects.Model RPRPR ({RPRPR})\n"
+                       "  pose    x1 in [-20, 20]\n  pose    x2 in [-20, 20]\n"
+                       "  command q1 in [2, 6]\n  command q2 in [4, 9]\n"
+                       "  equation   x1^2 + x2^2 - q1^2 = 0\n"
+                       "  equation   (x1 - 9)^2 + x2^2 - q2^2 = 0>")
+    d = aspects.Model.default()
+    assert d.periodic == ["q1", "q2"] and d.bisect == "verdict"
+    lo, hi = d.domains["q1"]
+    assert lo <= -math.pi and math.pi <= hi and hi - lo < 2 * math.pi + 1e-14  # outward
+    assert "command q1 in [-3.14159, 3.14159] periodic" in repr(d)
+
+
+def test_query_and_path_are_classes_with_their_dict(rprpr):
+    _, _, r, _ = rprpr
+    q = r.query([3, 5])
+    assert isinstance(q, aspects.QueryResult)
+    assert q.outcome == "answered" and q.pose == (3.0, 5.0) and q.csncs == (1,)
+    a = q.answers[0]
+    assert isinstance(a, aspects.Command) and a.csnc == 1
+    assert a.command_lo[0] <= math.sqrt(34) <= a.command_hi[0]
+    assert a.to_dict() == q.to_dict()["answers"][0]
+    assert q["outcome"] == "answered" and q["answers"][0]["csnc"] == 1  # the dict's keys
+    q.to_dict()["outcome"] = "changed"  # a copy
+    assert q.outcome == "answered" and q["outcome"] == "answered"
+    p = r.path([3, 5], [4, 2.5])
+    assert isinstance(p, aspects.PathResult) and p.found and p.csnc == 1
+    assert p.start == (3.0, 5.0) and p.goal == (4.0, 2.5)
+    assert p.waypoints[0].kind == "start" and p.waypoints[-1].pose == (4.0, 2.5)
+    assert p.poses.shape == (len(p.waypoints), 2)
+    assert p.length == p.to_dict()["length"] > math.dist((3, 5), (4, 2.5))
+    none = r.path([3, 5], [19, 19])
+    assert not none.found and none.outcome == "goal_in_no_solution_box"
+    assert none.csnc is None and none.length is None and none.poses.shape == (0, 2)
+
+
+def test_query_many_poses_gives_arrays(rprpr):
+    _, _, r, _ = rprpr
+    poses = np.array([[3, 5], [4, 2.5], [19.5, 19.5]])
+    b = r.query(poses)
+    assert isinstance(b, aspects.QueryBatch) and len(b) == 3
+    assert list(b.outcome) == ["answered", "answered", "outside_workspace"]
+    assert b.count.tolist() == [1, 1, 0]
+    assert b.csnc.tolist() == [[1], [1], [-1]]
+    assert b.command_lo.shape == b.command_hi.shape == (3, 1, 2)
+    assert np.isnan(b.command_lo[2]).all()
+    for i, pose in enumerate(poses):  # each row as the one-pose query answers it
+        one = r.query(pose)
+        assert b[i] == one and b.to_dict()[i] == one.to_dict()
+        assert b.command_lo[i, :b.count[i]].tolist() == [list(a.command_lo) for a in one.answers]
+    assert len(r.query(np.empty((0, 2)))) == 0
+    assert r.query([[3, 5]]).count.tolist() == [1]  # a list of rows too
+
+
+@pytest.mark.parametrize("poses, error, match", [
+    (np.zeros((2, 3)), ValueError, r"^poses must have 2 columns \(x1, x2\), got 3$"),
+    (np.array([[3, 5], [np.nan, 1]]), ValueError, r"^poses\[1\]: x1 = nan is not a finite number$"),
+    (np.array([[3, 5], [30, 1]]), ValueError, r"^poses\[1\]: x1 = 30 is outside its declared domain"),
+    ([[3, 5], [1]], TypeError, r"^poses must be an N x n array of numbers$"),
+    ([["a", "b"]], TypeError, r"^poses must be an N x n array of numbers$"),
+])
+def test_query_many_bad_poses(rprpr, poses, error, match):
+    _, _, r, _ = rprpr
+    with pytest.raises(error, match=match):
+        r.query(poses)
