@@ -87,3 +87,32 @@ TEST(ExactCount, RefusesUserFactorsAndConstraints) {
                      "equation x^2 + q^2 = 1\nconstraint x <= 0.5\n"),
                std::invalid_argument);
 }
+
+// The two models below are graphs over the pose (q1 = x1, q2 = h(x)), whose one factor that
+// can vanish is ∂h/∂x2 = x2² − x1² − δ: the aspects are the components of {x2² ≠ x1² + δ}
+// in [−1, 1]², top and bottom (x2² > x1² + δ) and the bow tie between them.
+std::string bow_tie(const char* delta_sign) {
+  return std::string("robot bow_tie\npose x1 in [-1, 1]\npose x2 in [-1, 1]\n"
+                     "command q1 in [-1, 1]\ncommand q2 in [-5, 5]\nequation q1 - x1 = 0\n"
+                     "equation q2 - (x2^3/3 - (x1^2 ") + delta_sign + " 0.0001)*x2) = 0\n";
+}
+
+// δ > 0: the bow tie is one aspect, its two halves joined by a neck 0.02 high at x1 = 0,
+// far thinner than ε: three aspects. The solve's bound sees 2 (its boxes at the neck are
+// undecided, and the top and bottom meet through them).
+TEST(ExactCount, AThinNeckJoinsOneAspect) {
+  const CountResult r = count(bow_tie("+"), 0.5);
+  EXPECT_EQ(r.separation_bound, 2);
+  EXPECT_EQ(r.bounds.lower, 3);
+  EXPECT_EQ(r.bounds.upper, 3);
+}
+
+// δ < 0: the two halves of the bow tie, one sign class, are two aspects that meet only
+// through the boxes at the pinch, which a uniform ε leaves undecided; the top and bottom
+// are one aspect through the gap: three again, and the solve's bound 2.
+TEST(ExactCount, TwoAspectsOfOneClassMeetingOnlyInUndecidedBoxes) {
+  const CountResult r = count(bow_tie("-"), 0.5);
+  EXPECT_EQ(r.separation_bound, 2);
+  EXPECT_EQ(r.bounds.lower, 3);
+  EXPECT_EQ(r.bounds.upper, 3);
+}

@@ -67,21 +67,16 @@ PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, con
   // Scales of the factors over the box, to compare their margins with the faces'.
   const bool scaled = fg.values(ev, box, whole);
   Box pt = box;
-  for (;;) {
-    Candidate c;
-    c.u.resize(n);
-    for (int k = 0; k < n; ++k) {
-      const double lo = box[u[k]].lo_down(), hi = box[u[k]].hi_up();
-      const int cells = lo == hi ? 1 : per_axis;
-      c.u[k] = std::min(hi, std::max(lo, lo + (hi - lo) * (idx[k] + 0.5) / cells));
-      pt[u[k]].set_point(c.u[k]);
-    }
-    if (newton_w(ev, pt, w, c.w)) {
+  // The depth of a u-point in the piece: the least of the factors' margins (relative to
+  // their range over the box) and the distances to the faces of W (relative to its width);
+  // a star centre deep inside has the best chance. False when Newton leaves the box.
+  auto depth = [&](Candidate& c) {
+    for (int k = 0; k < n; ++k) pt[u[k]].set_point(c.u[k]);
+    const bool ok = newton_w(ev, pt, w, c.w);
+    if (ok) {
       for (int j = 0; j < n; ++j) pt[w[j]].set_point(c.w[j]);
+      c.margin = -INFINITY;
       if (fg.values(ev, pt, values)) {
-        // The depth of the point in the piece: the least of the factors' margins (relative
-        // to their range over the box) and the distances to the faces of W (relative to
-        // its width), a star centre deep inside has the best chance.
         c.margin = INFINITY;
         for (int i = 0; i < p; ++i) {
           const double s = (cls >> i) & 1 ? 1.0 : -1.0;
@@ -94,9 +89,24 @@ PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, con
           const double lo = box[w[j]].lo_down(), hi = box[w[j]].hi_up();
           if (hi > lo) c.margin = std::min(c.margin, std::min(c.w[j] - lo, hi - c.w[j]) / (hi - lo));
         }
-        if (c.margin > 0) found.push_back(c);
       }
       for (int j = 0; j < n; ++j) pt[w[j]] = box[w[j]];
+    }
+    return ok;
+  };
+  Candidate best;
+  best.margin = -INFINITY;
+  for (;;) {
+    Candidate c;
+    c.u.resize(n);
+    for (int k = 0; k < n; ++k) {
+      const double lo = box[u[k]].lo_down(), hi = box[u[k]].hi_up();
+      const int cells = lo == hi ? 1 : per_axis;
+      c.u[k] = std::min(hi, std::max(lo, lo + (hi - lo) * (idx[k] + 0.5) / cells));
+    }
+    if (depth(c)) {
+      if (c.margin > 0) found.push_back(c);
+      if (c.margin > best.margin) best = c;
     }
     int k = 0;
     for (; k < n; ++k) {
@@ -105,6 +115,26 @@ PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, con
       idx[k] = 0;
     }
     if (k == n) break;
+  }
+  // A piece that is a sliver (the class cut off by a singular surface near a corner of the
+  // box) holds no grid point: climb from the deepest one, coordinate by coordinate, with
+  // halving steps, towards more depth.
+  if (found.empty() && !best.u.empty()) {
+    std::vector<double> step(n);
+    for (int k = 0; k < n; ++k) step[k] = 0.25 * box[u[k]].width_up() / per_axis;
+    for (int it = 0; it < 48; ++it) {
+      bool moved = false;
+      for (int k = 0; k < n; ++k)
+        for (double dir : {-1.0, 1.0}) {
+          Candidate c = best;
+          c.u[k] = std::min(box[u[k]].hi_up(), std::max(box[u[k]].lo_down(), c.u[k] + dir * step[k]));
+          if (c.u[k] != best.u[k] && depth(c) && c.margin > best.margin) best = c, moved = true;
+        }
+      if (!moved)
+        for (double& h : step) h *= 0.5;
+      if (best.margin > 0 && !moved) break;
+    }
+    if (best.margin > 0) found.push_back(best);
   }
   std::sort(found.begin(), found.end(),
             [](const Candidate& a, const Candidate& b) { return a.margin > b.margin; });

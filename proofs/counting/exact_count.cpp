@@ -333,7 +333,13 @@ class Counter {
       // w has an extreme inside U: a face constraint there cannot be cleared. When the range
       // is little wider than the box (no cut, only overestimation), the box grows to it
       // within the domain instead, and only the domain's faces remain.
-      if (!c.solution && small_growth(c.box, chart)) {
+      // So does a box on whose U × range every factor has one sign: its piece is then the
+      // whole graph, connected with no test (a star test with the cut's faces costs tens of
+      // sub-boxes).
+      std::vector<Interval> rv;
+      bool one_class = fg_.values(ev_, z, rv);
+      for (const Interval& x : rv) one_class = one_class && (x.certainly_pos() || x.certainly_neg());
+      if (!c.solution && (one_class || small_growth(c.box, chart))) {
         for (int j = 0; j < n; ++j) {
           const int v = chart.w[j];
           double lo = chart.w_range[j].lo_down(), hi = chart.w_range[j].hi_up();
@@ -396,7 +402,7 @@ class Counter {
           continue;
         }
         ClassPoint centre;
-        if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, centre, 4) != PointVerdict::Found) {
+        if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, centre, 3) != PointVerdict::Found) {
           const bool empty = prove_piece_empty(ev_, fg_, chart, z, s, ws_) == EmptyVerdict::Empty;
           c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
                               OpenReason::NoPoint});
