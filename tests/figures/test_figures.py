@@ -1,0 +1,257 @@
+"""Tests of the figures: `aspects plot` and Result.plot(), `aspects view` (a page that
+headless Chromium draws), `aspects export --vtk` (read back with meshio). Run by ctest as
+figures.pytest with PYTHONPATH on build/python and ASPECTS_EXE, ASPECTS_ROBOTS set.
+
+The assertions are on what was drawn or written: the title's words, the legend's
+entries, the axes' labels, the coloured collections, the pixels of a saved PNG, the
+cells and labels of a VTK file. RRRRR at eps 0.5 is the case of issue 51: 12 CSNCs kept
+by the filter, a certified bound of 10 whose representatives include CSNCs 64 and 134,
+which the filter drops.
+"""
+import json
+import os
+import struct
+import subprocess
+
+import numpy as np
+import pytest
+
+import matplotlib
+import matplotlib.pyplot as plt
+from matplotlib.collections import PolyCollection
+
+import aspects
+from aspects import plotting
+
+EXE = os.environ["ASPECTS_EXE"]
+ROBOTS = os.environ["ASPECTS_ROBOTS"]
+
+
+def cli(*args, check=True):
+    run = subprocess.run([EXE, *args], capture_output=True, text=True)
+    if check and run.returncode != 0:
+        raise AssertionError(f"{args}: exit {run.returncode}: {run.stderr}")
+    return run
+
+
+def solved(tmp_path_factory, robot, eps):
+    d = str(tmp_path_factory.mktemp(robot.split(".")[0]) / "out")
+    cli("solve", os.path.join(ROBOTS, robot), "--eps", str(eps), "--out", d, "--quiet")
+    return d
+
+
+@pytest.fixture(scope="module")
+def rrrrr(tmp_path_factory):
+    return solved(tmp_path_factory, "rrrrr.robot", 0.5)
+
+
+@pytest.fixture(scope="module")
+def rprpr(tmp_path_factory):
+    return solved(tmp_path_factory, "rprpr.robot", 0.2)
+
+
+@pytest.fixture(scope="module")
+def rpr3(tmp_path_factory):
+    return solved(tmp_path_factory, "3rpr.robot", 3)
+
+
+def png_size(path):
+    with open(path, "rb") as f:
+        head = f.read(24)
+    assert head[:8] == b"\x89PNG\r\n\x1a\n"
+    return struct.unpack(">II", head[16:24])
+
+
+def legend_texts(fig_or_ax):
+    leg = fig_or_ax.legends[0] if hasattr(fig_or_ax, "legends") and fig_or_ax.legends else \
+        fig_or_ax.get_legend()
+    return [t.get_text() for t in leg.get_texts()]
+
+
+def colour_collections(ax):
+    """The PolyCollections of an axes whose face colour is not grey (the CSNCs')."""
+    out = []
+    for c in ax.collections:
+        if isinstance(c, PolyCollection) and len(c.get_facecolors()):
+            r, g, b, _ = c.get_facecolors()[0]
+            if not (abs(r - g) < 1e-6 and abs(g - b) < 1e-6) and \
+                    matplotlib.colors.to_hex((r, g, b)) != plotting.OTHER:
+                out.append(matplotlib.colors.to_hex((r, g, b)))
+    return out
+
+
+# ------------------------------------------------------------------------------ plot
+RRRRR_DRAWN = [0, 1, 2, 3, 4, 5, 8, 9, 64, 134, 6, 7, 10, 11]
+
+
+def test_plot_states_the_certified_count_then_separated_then_large(rrrrr):
+    r = aspects.load(rrrrr)
+    assert r.summary["csncs"]["filtered"] == 12 and r.lower_bound == 10
+    fig = r.plot()
+    assert fig._suptitle.get_text() == (
+        "RRRRR, ε = 0.5: at least 10 aspects (certified)\n"
+        "14 of 210 CSNCs drawn, the 10 separated first (certified in pairwise distinct "
+        "aspects); on (x1, x2)")
+    sizes = {k: int((r.csnc == k).sum()) for k in RRRRR_DRAWN}
+    labels = legend_texts(fig)
+    assert labels[:10] == [f"CSNC {k} ({sizes[k]} boxes)" + (", separated" if i < 10 else "")
+                           for i, k in enumerate(RRRRR_DRAWN[:10])]
+    assert labels[10:] == [
+        "... 4 more CSNCs drawn",
+        f"196 other CSNCs ({int(((r.csnc >= 0) & ~np.isin(r.csnc, RRRRR_DRAWN)).sum())} "
+        "boxes), not drawn one by one",
+        f"undecided ({int((r.status != aspects.SOLUTION).sum())} boxes: singular or "
+        "unresolved)"]
+    # The overview, then one panel per drawn CSNC, each in its own colour.
+    panels = [ax for ax in fig.axes if ax.get_title()]
+    assert [ax.get_title() for ax in panels[1:]] == [
+        f"CSNC {k}: {sizes[k]} boxes" + (", separated" if i < 10 else "")
+        for i, k in enumerate(RRRRR_DRAWN)]
+    overview = colour_collections(panels[0])
+    assert len(overview) == 14 and len(set(overview)) == 14
+    assert [colour_collections(ax) for ax in panels[1:]] == [[c] for c in overview]
+    assert (panels[0].get_xlabel(), panels[0].get_ylabel()) == ("x1", "x2")
+    plt.close(fig)
+
+
+def test_plot_undecided_boxes_are_quiet(rprpr, tmp_path):
+    """Light grey beneath the CSNCs, never red: no red pixel in the PNG, light grey ones."""
+    r = aspects.load(rprpr)
+    fig = r.plot(str(tmp_path / "p.png"))
+    ax = fig.axes[1]
+    und = [c for c in ax.collections if isinstance(c, PolyCollection)
+           and matplotlib.colors.to_hex(c.get_facecolors()[0]) == matplotlib.colors.to_hex(
+               plotting.QUIET)]
+    assert len(und) == 1 and und[0].get_zorder() < 2
+    assert float(und[0].get_linewidths()[0]) == pytest.approx(0.2)
+    img = (plt.imread(str(tmp_path / "p.png"))[:, :, :3] * 255).round().astype(int)
+    red = (np.abs(img - [214, 39, 40]).sum(axis=2) < 30).sum()
+    grey = (np.abs(img - [217, 217, 217]).sum(axis=2) < 6).sum()
+    assert red == 0 and grey > 2000
+    plt.close(fig)
+
+
+def test_plot_exact_or_upper_count_is_said_as_such():
+    kw = dict(names=["x1", "x2"], lower=[[0, 0]], upper=[[1, 1]], status=[0], csnc=[0],
+              filtered=1, robot="R", eps=0.5)
+    assert plotting.count_claim(plotting.BoxSet(**kw, lower_bound=3)) == \
+        "at least 3 aspects (certified)"
+    assert plotting.count_claim(plotting.BoxSet(**kw, lower_bound=1)) == \
+        "at least 1 aspect (certified)"
+    assert plotting.count_claim(plotting.BoxSet(**kw, lower_bound=2, upper_bound=4)) == \
+        "at least 2 aspects (certified), at most 4 (certified)"
+    assert plotting.count_claim(plotting.BoxSet(**kw, lower_bound=2, exact=2)) == \
+        "exactly 2 aspects (certified)"
+    assert plotting.count_claim(plotting.BoxSet(**kw)) == "no certified count of aspects recorded"
+
+
+def test_plot_joint_space_axes(rrrrr):
+    r = aspects.load(rrrrr)
+    fig = r.plot(axes=["q1", "q2"], largest=3)
+    ax = fig.axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("q1", "q2")
+    assert fig._suptitle.get_text().endswith(
+        "3 of 210 CSNCs drawn, the 3 separated first (certified in pairwise distinct "
+        "aspects); on (q1, q2)")
+    undecided = int((r.status != aspects.SOLUTION).sum())
+    assert legend_texts(fig)[-1] == (f"undecided boxes ({undecided}) not drawn: the result "
+                                     "keeps their pose part only")
+    assert len(colour_collections(ax)) == 3
+    # A command axis spans the boxes' command parts.
+    lo, hi = ax.get_xlim()
+    sol = r.status == aspects.SOLUTION
+    q1 = r.variables.index("q1")
+    assert lo < r.lower[sol, q1].min() and hi > r.upper[sol, q1].max() and hi - lo < 8
+    plt.close(fig)
+
+
+def test_plot_chosen_csncs_in_the_given_order(rrrrr):
+    r = aspects.load(rrrrr)
+    fig = r.plot(csncs=[134, 2])
+    labels = legend_texts(fig)
+    assert labels[0].startswith("CSNC 134 (") and labels[0].endswith(", separated")
+    assert labels[1].startswith("CSNC 2 (")
+    assert [ax.get_title().split(":")[0] for ax in fig.axes[1:3]] == ["CSNC 134", "CSNC 2"]
+    assert len(colour_collections(fig.axes[0])) == 2
+    plt.close(fig)
+
+
+def test_plot_into_a_given_axes(rprpr):
+    r = aspects.load(rprpr)
+    fig, ax = plt.subplots()
+    got = r.plot(ax=ax)
+    assert got is fig and fig.axes == [ax]
+    assert ax.get_title() == "RPRPR, ε = 0.2: at least 2 aspects (certified)"
+    assert legend_texts(ax)[:2] == [f"CSNC {k} ({int((r.csnc == k).sum())} boxes), separated"
+                                    for k in (0, 1)]
+    assert len(colour_collections(ax)) == 2
+    plt.close(fig)
+
+
+def test_plot_dpi_and_size(rprpr, tmp_path):
+    r = aspects.load(rprpr)
+    plt.close(r.plot(str(tmp_path / "py.png"), dpi=50, size=(4, 3)))
+    assert png_size(tmp_path / "py.png") == (200, 150)
+    out = cli("plot", rprpr, "--out", str(tmp_path / "cli.png"), "--dpi", "40", "--size", "5x2.5")
+    assert out.stdout == f"wrote {tmp_path / 'cli.png'}\n"
+    assert png_size(tmp_path / "cli.png") == (200, 100)
+
+
+def test_cli_plot_svg_says_the_count_and_legend(rrrrr, tmp_path):
+    cli("plot", rrrrr, "--out", str(tmp_path / "f.svg"), "--axes", "q1,x2", "--csnc", "64,0")
+    svg = (tmp_path / "f.svg").read_text()
+    assert "RRRRR, ε = 0.5: at least 10 aspects (certified)" in svg
+    assert "2 of 210 CSNCs drawn, the 2 separated first" in svg
+    assert ">CSNC 64 (" in svg and ">CSNC 0 (" in svg and ">CSNC 1 (" not in svg
+    assert "filtered" not in svg and "12 " not in svg.split("CSNCs drawn")[0][-40:]
+    assert ">q1<" in svg and ">x2<" in svg
+
+
+def test_plot_three_axes_is_3d(rpr3):
+    r = aspects.load(rpr3)
+    fig = r.plot(axes="x1,x2,q1")
+    assert fig.axes[0].name == "3d" and fig.axes[0].get_zlabel() == "q1"
+    assert fig._suptitle.get_text().startswith("3-RPR, ε = 3: at least 2 aspects (certified)\n")
+    plt.close(fig)
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--axes", "q9,x1"], "--axes: 'q9' is not a variable of RPRPR (its variables: x1, x2, q1, q2)"),
+    (["--axes", "x1"], "--axes: give 2 or 3 variable names separated by commas, got 'x1'"),
+    (["--axes", "x1,x1"], "--axes: 'x1' is given twice"),
+    (["--csnc", "0,99"], "--csnc: CSNCs are numbered from 0 to 1 (the result has 2), got 99"),
+    (["--csnc", "0,x"], "--csnc: give CSNC numbers separated by commas, got '0,x'"),
+    (["--csnc", "1,1"], "--csnc: CSNC 1 is given twice"),
+    (["--largest", "0"], "--largest: a number of CSNCs, an integer from 1 to 1000000, got '0'"),
+    (["--dpi", "5"], "--dpi: dots per inch, an integer from 10 to 2400, got '5'"),
+    (["--dpi", "9e9"], "--dpi: dots per inch, an integer from 10 to 2400, got '9e9'"),
+    (["--size", "8"], "--size: give WIDTHxHEIGHT in inches (e.g. 8x6), each above 0 and at "
+                      "most 100, got '8'"),
+    (["--size", "0x3"], "--size: give WIDTHxHEIGHT in inches (e.g. 8x6), each above 0 and at "
+                        "most 100, got '0x3'"),
+    (["--axes", "q1,q2", "--path", "PATH"],
+     "--axes: 'q1' is not a pose variable, and --path is drawn in pose coordinates (x1, x2)"),
+])
+def test_cli_plot_bad_options_name_the_option(rprpr, tmp_path, args, message):
+    if "PATH" in args:
+        r = aspects.load(rprpr)
+        (tmp_path / "p.json").write_text(json.dumps(r.path([3, 5], [4, 2.5])))
+        args = [str(tmp_path / "p.json") if a == "PATH" else a for a in args]
+    run = cli("plot", rprpr, "--out", str(tmp_path / "x.png"), *args, check=False)
+    assert (run.returncode, run.stderr) == (2, f"aspects: {message}\n")
+    assert not (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(axes=["x1", "q7"]), "axes: 'q7' is not a variable of RPRPR"),
+    (dict(axes="x1"), "axes: give 2 or 3 variables, got 1 (x1)"),
+    (dict(csncs=[5]), "csncs: CSNCs are numbered 0 to 1 (the result has 2), got 5"),
+    (dict(largest=0), "largest: a number of CSNCs, at least 1, got 0"),
+    (dict(dpi=3), "dpi: an integer from 10 to 2400, got 3"),
+    (dict(size=(4,)), r"size: \(width, height\) in inches"),
+    (dict(csncs=[0], largest=1), "csncs and largest: give one of them"),
+])
+def test_result_plot_bad_options(rprpr, kw, message):
+    with pytest.raises(ValueError, match="^" + message.replace("(", r"\(").replace(")", r"\)")
+                       if "\\" not in message else "^" + message):
+        aspects.load(rprpr).plot(**kw)
