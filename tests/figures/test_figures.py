@@ -255,3 +255,167 @@ def test_result_plot_bad_options(rprpr, kw, message):
     with pytest.raises(ValueError, match="^" + message.replace("(", r"\(").replace(")", r"\)")
                        if "\\" not in message else "^" + message):
         aspects.load(rprpr).plot(**kw)
+
+
+# ------------------------------------------------------------------------------ view
+def chromium_screenshot(html, png, size=(1100, 800)):
+    """Headless Chromium's screenshot of a page (WebGL by SwiftShader: no GPU needed)."""
+    exe = next((p for p in ("/usr/bin/chromium", "/usr/bin/chromium-browser") if os.path.exists(p)),
+               None)
+    assert exe, "chromium is missing (README's install line installs it)"
+    run = subprocess.run([exe, "--headless", "--no-sandbox", "--disable-gpu",
+                          "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
+                          "--hide-scrollbars", f"--window-size={size[0]},{size[1]}",
+                          "--virtual-time-budget=15000", f"--screenshot={png}",
+                          f"file://{html}"], capture_output=True, text=True, timeout=180)
+    assert run.returncode == 0 and os.path.exists(png), run.stderr[-2000:]
+    return (plt.imread(png)[:, :, :3] * 255).round().astype(int)
+
+
+def page_figure(html):
+    """(traces, layout) of the page's Plotly.newPlot("id", [traces], {layout}, ...) call."""
+    start = html.rindex("Plotly.newPlot(")
+    at = html.index("[", html.index(",", start))
+    dec = json.JSONDecoder()
+    traces, end = dec.raw_decode(html, at)
+    layout, _ = dec.raw_decode(html, html.index("{", end))
+    return traces, layout
+
+
+def saturated_hues(img):
+    """Pixels with a clear colour (not white, grey or black), binned by hue (30° bins):
+    {bin: pixels}."""
+    mx, mn = img.max(axis=2), img.min(axis=2)
+    sat = (mx - mn) > 40
+    r, g, b = [img[:, :, i][sat].astype(float) for i in range(3)]
+    hue = np.degrees(np.arctan2(np.sqrt(3) * (g - b), 2 * r - g - b)) % 360
+    bins, counts = np.unique((hue // 30).astype(int), return_counts=True)
+    return dict(zip(bins.tolist(), counts.tolist()))
+
+
+def test_view_page_turns_in_a_browser(rpr3, tmp_path):
+    r = aspects.load(rpr3)
+    out = tmp_path / "v.html"
+    run = cli("view", rpr3, "--out", str(out))
+    assert run.stdout == f"wrote {out}\n"
+    html = out.read_text()
+    # Self-contained: plotly.js inside, nothing fetched.
+    assert "<script src=" not in html and html.count("Plotly.newPlot") >= 1 and len(html) > 3e6
+    sizes = {k: int((r.csnc == k).sum()) for k in range(6)}
+    names = [f"CSNC 0 ({sizes[0]} boxes), separated", f"CSNC 2 ({sizes[2]} boxes), separated",
+             f"CSNC 1 ({sizes[1]} boxes)", f"CSNC 3 ({sizes[3]} boxes)",
+             f"CSNC 4 ({sizes[4]} boxes)",
+             f"undecided region ({int((r.status != aspects.SOLUTION).sum())} boxes), faint shell"]
+    traces, layout = page_figure(html)
+    assert [t["name"] for t in traces] == names
+    assert all(t["type"] == "mesh3d" and t["showlegend"] for t in traces)
+    assert len({t["color"] for t in traces}) == 6
+    assert [t["opacity"] for t in traces] == [1] * 5 + [0.08]
+    assert layout["title"]["text"].startswith("3-RPR, ε = 3: at least 2 aspects (certified)<br>")
+    assert [layout["scene"][a]["title"]["text"] for a in ("xaxis", "yaxis", "zaxis")] == \
+        ["x1", "x2", "x3"]
+    img = chromium_screenshot(str(out), str(tmp_path / "shot.png"))
+    plot_area = img[90:, :780]                      # left of the legend, below the title
+    nonwhite = (plot_area.min(axis=2) < 235).sum()
+    hues = saturated_hues(plot_area)
+    assert nonwhite > 40000, nonwhite
+    assert sum(1 for c in hues.values() if c > 300) >= 3, hues
+
+
+def test_view_voxels_and_chosen_axes(rprpr, tmp_path):
+    r = aspects.load(rprpr)
+    out = tmp_path / "v.html"
+    cli("view", rprpr, "--out", str(out), "--axes", "x1,x2,q1", "--voxels", "--grid", "16")
+    traces, layout = page_figure(out.read_text())
+    assert [t["name"] for t in traces] == [
+        f"CSNC {k} ({int((r.csnc == k).sum())} boxes), separated" for k in (0, 1)]
+    title = layout["title"]["text"]
+    assert (f"undecided boxes ({int((r.status != aspects.SOLUTION).sum())}) not drawn: the "
+            "result keeps their pose part only") in title
+    assert "voxels over the boxes on a 16³ grid" in title
+    assert layout["scene"]["zaxis"]["title"]["text"] == "q1"
+    img = chromium_screenshot(str(out), str(tmp_path / "shot.png"))
+    assert len([c for c in saturated_hues(img[90:, :780]).values() if c > 300]) >= 2
+
+
+@pytest.mark.parametrize("cmd, args, message", [
+    ("view", [], "--axes: `aspects view` draws 3 variables and RPRPR has 2 pose variables "
+                 "(x1, x2): give three of x1, x2, q1, q2 with --axes"),
+    ("view", ["--axes", "x1,x2"], "--axes: give 3 variable names separated by commas, got "
+                                  "'x1,x2'"),
+    ("view", ["--axes", "x1,x2,q1", "--out", "OUT/v.png"],
+     "--out: the view is an HTML page; give a name ending in .html, got OUT/v.png"),
+    ("view", ["--axes", "x1,x2,q1", "--grid", "2"],
+     "--grid: cells per axis, an integer from 4 to 256, got '2'"),
+    ("export", ["--vtk", "OUT/m.vtu"], "--axes: `aspects export` draws 3 variables and RPRPR "
+                                       "has 2 pose variables (x1, x2): give three of x1, x2, "
+                                       "q1, q2 with --axes"),
+    ("export", ["--vtk", "OUT/m.obj", "--axes", "x1,x2,q1"],
+     "--vtk: give a file name ending in .vtu (VTK XML) or .vtk (legacy VTK), got "
+     "'OUT/m.obj'"),
+])
+def test_view_and_export_bad_options(rprpr, tmp_path, cmd, args, message):
+    args = [a.replace("OUT", str(tmp_path)) for a in args]
+    run = cli(cmd, rprpr, *args, check=False)
+    assert (run.returncode, run.stderr) == (2, "aspects: " + message.replace("OUT", str(tmp_path))
+                                            + "\n")
+    assert os.listdir(tmp_path) == []
+
+
+# ------------------------------------------------------------------------------ export
+def brute_force_cells(lo, hi, sel, cells):
+    """The occupied cells of the boxes `sel`, found directly: the grid of raster.Grid.around
+    over all the boxes (cells per axis over their extent, one empty cell on each side), a
+    cell occupied when its interior meets one of the boxes."""
+    a, b = lo.min(axis=0), hi.max(axis=0)
+    step = (b - a) / cells
+    origin = a - step
+    idx = np.arange(cells + 2)
+    occupied = np.zeros((cells + 2,) * 3, dtype=bool)
+    for blo, bhi in zip(lo[sel], hi[sel]):
+        m = [(origin[d] + idx * step[d] < bhi[d]) & (origin[d] + (idx + 1) * step[d] > blo[d])
+             for d in range(3)]
+        occupied |= m[0][:, None, None] & m[1][None, :, None] & m[2][None, None, :]
+    return occupied
+
+
+def test_export_voxels_read_back(rpr3, tmp_path):
+    import meshio
+    r = aspects.load(rpr3)
+    out = tmp_path / "h.vtu"
+    run = cli("export", rpr3, "--vtk", str(out), "--voxels", "--grid", "12", "--csnc", "4,2")
+    assert run.stdout == f"wrote {out}\n"
+    m = meshio.read(str(out))
+    assert [c.type for c in m.cells] == ["hexahedron"]
+    label = m.cell_data["csnc"][0]
+    pose = [r.variables.index(v) for v in ("x1", "x2", "x3")]
+    lo, hi = r.lower[:, pose], r.upper[:, pose]
+    expected = {k: int(brute_force_cells(lo, hi, r.csnc == k, 12).sum()) for k in (4, 2)}
+    assert expected[4] > 0 and expected[2] > expected[4]
+    assert label.tolist() == [4] * expected[4] + [2] * expected[2]
+    assert m.cell_data["separated"][0].tolist() == [0] * expected[4] + [1] * expected[2]
+    assert sorted(os.listdir(tmp_path)) == ["h.vtu"]
+
+
+def test_export_surfaces_read_back(rpr3, tmp_path):
+    """Triangles labelled by CSNC in drawing order (the separated first), each CSNC's
+    surface closed: every edge is shared by exactly two of its triangles."""
+    import meshio
+    r = aspects.load(rpr3)
+    out = tmp_path / "m.vtk"
+    cli("export", rpr3, "--vtk", str(out))
+    m = meshio.read(str(out))
+    assert [c.type for c in m.cells] == ["triangle"]
+    tris, label = m.cells[0].data, m.cell_data["csnc"][0]
+    order = [k for i, k in enumerate(label.tolist()) if i == 0 or label[i - 1] != k]
+    assert order == [0, 2, 1, 3, 4]
+    assert sorted(set(np.flatnonzero(m.cell_data["separated"][0]).tolist())) == \
+        np.flatnonzero(np.isin(label, [0, 2])).tolist()
+    for k in order:
+        t = tris[label == k]
+        edges = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+        _, counts = np.unique(edges, axis=0, return_counts=True)
+        assert len(t) > 0 and set(counts.tolist()) == {2}, k
+    pose = [r.variables.index(v) for v in ("x1", "x2", "x3")]
+    assert (m.points.min(axis=0) >= r.lower[:, pose].min(axis=0) - 0.1 * np.ptp(
+        r.upper[:, pose], axis=0)).all()
