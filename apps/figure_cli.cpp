@@ -6,9 +6,11 @@ namespace {
 
 void add_choice_options(CLI::App* cmd, FigureOptions& fo, const std::string& default_choice) {
   auto* csnc = cmd->add_option("--csnc", fo.csncs,
-                               "draw these CSNCs, e.g. 0,3,5 (default: " + default_choice + ")");
+                               "draw these CSNCs, e.g. 0,3,5 (default: " + default_choice + ")")
+                   ->type_name("LIST");
   auto* largest = cmd->add_option("--largest", fo.largest,
-                                  "draw the N largest CSNCs (the separated ones among them first)");
+                                  "draw the N largest CSNCs (the separated ones among them first)")
+                      ->type_name("N");
   csnc->excludes(largest);
 }
 
@@ -24,11 +26,14 @@ void add_plot(CLI::App& app, FigureCommands& f) {
                    "RESULT_DIR/aspects.png)");
   plot->add_option("--path", po.path, "draw the path of this file (`aspects path --json` output)");
   plot->add_option("--axes", po.figure.axes,
-                   "two or three variables, pose or command, e.g. q1,q2 (default: the pose's)");
+                   "two or three variables, pose or command, e.g. q1,q2 (default: the pose's)")
+      ->type_name("VARS");
   add_choice_options(plot, po.figure,
                      "the separated CSNCs, then the largest the filter keeps, 25 in all");
-  plot->add_option("--dpi", po.figure.dpi, "dots per inch of a PNG (10 to 2400; default 110)");
-  plot->add_option("--size", po.figure.size, "figure size WIDTHxHEIGHT in inches, e.g. 8x6");
+  plot->add_option("--dpi", po.figure.dpi, "dots per inch of a PNG (10 to 2400; default 110)")
+      ->type_name("N");
+  plot->add_option("--size", po.figure.size, "figure size WIDTHxHEIGHT in inches, e.g. 8x6")
+      ->type_name("WxH");
 }
 
 void add_view(CLI::App& app, FigureCommands& f) {
@@ -41,10 +46,13 @@ void add_view(CLI::App& app, FigureCommands& f) {
   view->add_option("--out", vo.out, "HTML file to write (default: RESULT_DIR/aspects.html)");
   view->add_option("--axes", vo.figure.axes,
                    "three variables, pose or command, e.g. x1,x2,q1 (default: the pose's, "
-                   "when it has three)");
-  add_choice_options(view, vo.figure, "the separated CSNCs, then the largest, 6 in all");
+                   "when it has three)")
+      ->type_name("VARS");
+  add_choice_options(view, vo.figure,
+                     "the separated CSNCs, then the largest the filter keeps, 6 in all");
   view->add_flag("--voxels", vo.figure.voxels, "draw voxels instead of surfaces");
-  view->add_option("--grid", vo.figure.grid, "raster cells per axis (4 to 256; default 64)");
+  view->add_option("--grid", vo.figure.grid, "raster cells per axis (4 to 256; default 64)")
+      ->type_name("N");
 }
 
 void add_export(CLI::App& app, FigureCommands& f) {
@@ -57,11 +65,14 @@ void add_export(CLI::App& app, FigureCommands& f) {
       ->required();
   exporter->add_option("--axes", eo.figure.axes,
                        "three variables, pose or command (default: the pose's, when it has "
-                       "three)");
-  add_choice_options(exporter, eo.figure, "the separated CSNCs, then the largest, 6 in all");
+                       "three)")
+      ->type_name("VARS");
+  add_choice_options(exporter, eo.figure,
+                     "the separated CSNCs, then the largest the filter keeps, 6 in all");
   exporter->add_flag("--voxels", eo.figure.voxels,
                      "hexahedra of the raster's cells instead of triangle surfaces");
-  exporter->add_option("--grid", eo.figure.grid, "raster cells per axis (4 to 256; default 64)");
+  exporter->add_option("--grid", eo.figure.grid, "raster cells per axis (4 to 256; default 64)")
+      ->type_name("N");
 }
 
 }  // namespace
