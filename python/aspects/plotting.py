@@ -38,9 +38,14 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
-try:  # in the package, or run as a script from its directory
+try:  # in the package
     from . import raster
 except ImportError:
+    # Run as a script, or loaded from its path (paper_repro/figures.py): its siblings
+    # (raster, solids, view3d, meshes) are imported from its directory.
+    _here = os.path.dirname(os.path.abspath(__file__))
+    if _here not in sys.path:
+        sys.path.insert(0, _here)
     import raster
 
 # Box status codes, as aspects.Result.status holds them (1 + the index's undecided kind).
@@ -79,6 +84,10 @@ def csnc_colors(n):
 
 def aspects_word(n):
     return f"{n} aspect{'' if n == 1 else 's'}"
+
+
+def boxes_word(n):
+    return f"{n} box{'' if n == 1 else 'es'}"
 
 
 class BoxSet:
@@ -383,7 +392,7 @@ def undecided_handles(bs, cols, constraint=True):
 
 def csnc_label(bs, k):
     sep = ", separated" if k in bs.representatives else ""
-    return f"CSNC {k} ({bs.csnc_size(k)} boxes){sep}"
+    return f"CSNC {k} ({boxes_word(bs.csnc_size(k))}){sep}"
 
 
 def csnc_handles(bs, shown, colors, legend_csncs=None):
@@ -396,7 +405,7 @@ def csnc_handles(bs, shown, colors, legend_csncs=None):
     if others.any():
         count = len(set(bs.csnc[others].tolist()))
         h.append(Patch(color=OTHER, label=f"{count} other CSNC{'s' if count > 1 else ''} "
-                       f"({int(others.sum())} boxes), not drawn one by one"))
+                       f"({boxes_word(int(others.sum()))}), not drawn one by one"))
     return h
 
 
@@ -406,6 +415,19 @@ def drawn_line(bs, shown, cols):
     sep = f", the {reps} separated first (certified in pairwise distinct aspects)" if reps else ""
     where = ", ".join(bs.vars[c] for c in cols)
     return f"{len(shown)} of {bs.csnc_count} CSNCs drawn{sep}; on ({where})"
+
+
+TINY_CSNC = 10               # boxes: at most this many get a ring around each (visible)
+
+
+def ring_tiny(ax, bs, mask, ix, iy, color, zorder=4.5):
+    """A ring around each box of a CSNC of at most TINY_CSNC boxes, which would otherwise
+    be a speck (RRRRR at eps 0.5: two separated CSNCs of one box each)."""
+    if 0 < int(mask.sum()) <= TINY_CSNC:
+        cx = 0.5 * (bs.lo[mask, ix] + bs.hi[mask, ix])
+        cy = 0.5 * (bs.lo[mask, iy] + bs.hi[mask, iy])
+        ax.scatter(cx, cy, s=90, facecolors="none", edgecolors=[color], linewidths=1.4,
+                   zorder=zorder)
 
 
 def draw_outline(ax, bs, mask, ix, iy, color, grid, zorder=4):
@@ -431,6 +453,7 @@ def draw_overview(ax, bs, ix, iy, shown, colors, constraint=True, cap=MAX_POLYS)
         m = bs.csnc == k
         add_rects(ax, bs, m, ix, iy, colors[j], alpha=0.35, cap=cap, zorder=2)
         draw_outline(ax, bs, m, ix, iy, colors[j], grid)
+        ring_tiny(ax, bs, m, ix, iy, colors[j])
 
 
 def decorate_2d(ax, bs, ix, iy, obstacle=None):
@@ -491,11 +514,12 @@ def csnc_grid(bs, title, constraint=True, obstacle=None, max_panels=DEFAULT_PANE
         ax = axs.flat[1 + j]
         undecided_layers(ax, bs, ix, iy, constraint, cap=cap, zorder=1)
         add_rects(ax, bs, bs.csnc == k, ix, iy, colors[j], zorder=2)
+        ring_tiny(ax, bs, bs.csnc == k, ix, iy, colors[j])
         decorate_2d(ax, bs, ix, iy, obstacle)
         if k == path_csnc:
             draw_path_2d(ax, bs, path, ix, iy)
         sep = ", separated" if k in bs.representatives else ""
-        ax.set_title(f"CSNC {k}: {bs.csnc_size(k)} boxes{sep}", fontsize=8)
+        ax.set_title(f"CSNC {k}: {boxes_word(bs.csnc_size(k))}{sep}", fontsize=8)
     handles = csnc_handles(bs, shown, colors, legend_csncs)
     handles += undecided_handles(bs, (ix, iy), constraint) + path_handles(path)
     if obstacle is not None:
@@ -506,7 +530,7 @@ def csnc_grid(bs, title, constraint=True, obstacle=None, max_panels=DEFAULT_PANE
     fig.legend(handles=handles, loc="lower center", ncol=ncols_leg, fontsize=8, frameon=False)
     legend_rows = math.ceil(len(handles) / ncols_leg)
     bottom = min(0.45, (0.22 * legend_rows + 0.1) / fig.get_figheight())
-    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.75 / fig.get_figheight()), h_pad=1.5)
+    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.75 / fig.get_figheight()), h_pad=2.2)
     return fig
 
 

@@ -41,7 +41,7 @@ def solids(bs, axes=None, csncs=None, largest=None, cells=64):
     shell = None
     if und.any():
         occ = raster.occupancy(grid, bs.lo[und][:, cols], bs.hi[und][:, cols])
-        shell = Solid(None, f"undecided region ({int(und.sum())} boxes)", plotting.QUIET,
+        shell = Solid(None, f"undecided region ({plotting.boxes_word(int(und.sum()))})", plotting.QUIET,
                       int(und.sum()), occ)
     return cols, grid, out, shell
 

@@ -55,6 +55,10 @@ def rpr3(tmp_path_factory):
     return solved(tmp_path_factory, "3rpr.robot", 3)
 
 
+def boxes(n):
+    return f"{n} box" if n == 1 else f"{n} boxes"
+
+
 def png_size(path):
     with open(path, "rb") as f:
         head = f.read(24)
@@ -94,7 +98,8 @@ def test_plot_states_the_certified_count_then_separated_then_large(rrrrr):
         "aspects); on (x1, x2)")
     sizes = {k: int((r.csnc == k).sum()) for k in RRRRR_DRAWN}
     labels = legend_texts(fig)
-    assert labels[:10] == [f"CSNC {k} ({sizes[k]} boxes)" + (", separated" if i < 10 else "")
+    assert sizes[64] == sizes[134] == 1
+    assert labels[:10] == [f"CSNC {k} ({boxes(sizes[k])})" + (", separated" if i < 10 else "")
                            for i, k in enumerate(RRRRR_DRAWN[:10])]
     assert labels[10:] == [
         "... 4 more CSNCs drawn",
@@ -105,11 +110,18 @@ def test_plot_states_the_certified_count_then_separated_then_large(rrrrr):
     # The overview, then one panel per drawn CSNC, each in its own colour.
     panels = [ax for ax in fig.axes if ax.get_title()]
     assert [ax.get_title() for ax in panels[1:]] == [
-        f"CSNC {k}: {sizes[k]} boxes" + (", separated" if i < 10 else "")
+        f"CSNC {k}: {boxes(sizes[k])}" + (", separated" if i < 10 else "")
         for i, k in enumerate(RRRRR_DRAWN)]
     overview = colour_collections(panels[0])
     assert len(overview) == 14 and len(set(overview)) == 14
     assert [colour_collections(ax) for ax in panels[1:]] == [[c] for c in overview]
+    # The one-box CSNCs get a ring in their colour, visible where the box is a speck.
+    for i, k in enumerate(RRRRR_DRAWN):
+        rings = [c for c in panels[1 + i].collections if not isinstance(c, PolyCollection)
+                 and len(c.get_offsets()) and len(c.get_edgecolors())]
+        assert len(rings) == (1 if k in (64, 134) else 0), k
+        if rings:
+            assert matplotlib.colors.to_hex(rings[0].get_edgecolors()[0]) == overview[i]
     assert (panels[0].get_xlabel(), panels[0].get_ylabel()) == ("x1", "x2")
     plt.close(fig)
 
