@@ -15,7 +15,7 @@ except ImportError:
     import solids as sol
 
 
-def csnc_mesh(bs, axes=None, csncs=None, largest=None, voxels=False, cells=64):
+def csnc_mesh(bs, axes=None, csncs=None, largest=None, voxels=False, cells=None):
     """(the meshio.Mesh of `aspects export`, the axes' names): one cell block ("triangle"
     or "hexahedron") holding every drawn CSNC, in drawing order."""
     import meshio
@@ -42,11 +42,15 @@ def csnc_mesh(bs, axes=None, csncs=None, largest=None, voxels=False, cells=64):
         [bs.vars[c] for c in cols]
 
 
-def write_vtk(bs, out, axes=None, csncs=None, largest=None, voxels=False, cells=64):
+def write_vtk(bs, out, axes=None, csncs=None, largest=None, voxels=False, cells=None):
     """Writes `out` (.vtu or .vtk, meshio's choice by extension) under a temporary name
     with the same extension, then renames it."""
     import meshio
-    mesh, _ = csnc_mesh(bs, axes, csncs, largest, voxels, cells or 64)
+    out = str(out)
+    if not out.endswith((".vtu", ".vtk")):
+        raise ValueError(f"out: give a file name ending in .vtu (VTK XML) or .vtk (legacy "
+                         f"VTK), got '{out}'")
+    mesh, _ = csnc_mesh(bs, axes, csncs, largest, voxels, cells)
     root, ext = os.path.splitext(out)
     tmp = f"{root}.tmp{os.getpid()}{ext}"
     try:

@@ -189,6 +189,23 @@ class Result:
                              path=path, title=title, axes=axes, csncs=csncs, largest=largest,
                              dpi=dpi, size=size, ax=ax)
 
+    def view(self, out, *, axes=None, csncs=None, largest=None, voxels=False, grid=None):
+        """Writes `out`, the HTML page of `aspects view` (plotly): the CSNCs of three
+        variables (default: a 3-DOF robot's pose) as surfaces, or voxels, that turn in a
+        browser. grid: raster cells per axis (4 to 256, default 64). ValueError for a bad
+        option."""
+        from . import view3d
+        view3d.write_view(self._box_set(), os.fspath(out), axes=axes, csncs=csncs,
+                          largest=largest, voxels=voxels, cells=grid)
+
+    def export_vtk(self, out, *, axes=None, csncs=None, largest=None, voxels=False, grid=None):
+        """Writes `out` (.vtu or .vtk), the file of `aspects export --vtk` (meshio): the
+        CSNCs as triangles, or hexahedra with voxels=True, with the cell fields "csnc" and
+        "separated". Options as view()."""
+        from . import meshes
+        meshes.write_vtk(self._box_set(), os.fspath(out), axes=axes, csncs=csncs,
+                         largest=largest, voxels=voxels, cells=grid)
+
     def _box_set(self):
         """The boxes for aspects.plotting: every variable, with the run's certified count."""
         from . import plotting

@@ -13,6 +13,18 @@ except ImportError:
     import raster
 
 DEFAULT_SOLIDS = 6          # CSNCs drawn unless chosen (the separated first)
+DEFAULT_CELLS, MIN_CELLS, MAX_CELLS = 64, 4, 256
+
+
+def check_cells(cells):
+    """The raster's cells per axis (None: the default); ValueError naming `grid`."""
+    if cells is None:
+        return DEFAULT_CELLS
+    if isinstance(cells, bool) or not isinstance(cells, (int, np.integer)) or \
+            not MIN_CELLS <= cells <= MAX_CELLS:
+        raise ValueError(f"grid: cells per axis, an integer from {MIN_CELLS} to {MAX_CELLS}, "
+                         f"got {cells!r}")
+    return int(cells)
 
 
 class Solid:
@@ -23,11 +35,14 @@ class Solid:
         self.csnc, self.label, self.color, self.boxes, self.occ = csnc, label, color, boxes, occ
 
 
-def solids(bs, axes=None, csncs=None, largest=None, cells=64):
+def solids(bs, axes=None, csncs=None, largest=None, cells=None):
     """(columns, grid, CSNC solids in drawing order, undecided solid or None). The
     undecided region is None when the axes leave the pose (the result keeps the undecided
     boxes' pose part only) or when there is none."""
+    cells = check_cells(cells)
     cols = plotting.resolve_axes(bs, axes, counts=(3,))
+    if csncs is not None and largest is not None:
+        raise ValueError("csncs and largest: give one of them")
     shown = plotting.choose_csncs(bs, csncs, largest, most=DEFAULT_SOLIDS)
     colors = [plotting.matplotlib.colors.to_hex(c) for c in plotting.csnc_colors(len(shown))]
     known = plotting.finite_on(bs, np.ones(len(bs.status), bool), cols)

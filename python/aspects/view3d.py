@@ -22,9 +22,10 @@ def mesh_trace(go, verts, tris, name, color, opacity=1.0, legendrank=1000):
                      lighting=dict(ambient=0.55, diffuse=0.7, specular=0.15))
 
 
-def view_figure(bs, axes=None, csncs=None, largest=None, voxels=False, cells=64):
+def view_figure(bs, axes=None, csncs=None, largest=None, voxels=False, cells=None):
     """The plotly Figure of `aspects view`."""
     import plotly.graph_objects as go
+    cells = sol.check_cells(cells)
     cols, grid, shown, shell = sol.solids(bs, axes, csncs, largest, cells)
     geometry = sol.voxel_faces if voxels else sol.surface
     traces = []
@@ -55,9 +56,11 @@ def view_figure(bs, axes=None, csncs=None, largest=None, voxels=False, cells=64)
     return fig
 
 
-def write_view(bs, out, axes=None, csncs=None, largest=None, voxels=False, cells=64):
+def write_view(bs, out, axes=None, csncs=None, largest=None, voxels=False, cells=None):
     """Writes `out` (HTML, plotly.js embedded) under a temporary name, then renames it."""
-    fig = view_figure(bs, axes, csncs, largest, voxels, cells or 64)
+    if not str(out).endswith(".html"):
+        raise ValueError(f"out: the view is an HTML page; give a name ending in .html, got {out}")
+    fig = view_figure(bs, axes, csncs, largest, voxels, cells)
     tmp = f"{out}.tmp{os.getpid()}.html"
     try:
         fig.write_html(tmp, include_plotlyjs=True, full_html=True, auto_open=False)

@@ -431,3 +431,35 @@ def test_export_surfaces_read_back(rpr3, tmp_path):
     pose = [r.variables.index(v) for v in ("x1", "x2", "x3")]
     assert (m.points.min(axis=0) >= r.lower[:, pose].min(axis=0) - 0.1 * np.ptp(
         r.upper[:, pose], axis=0)).all()
+
+
+# ------------------------------------------------------------------------------ Python
+def test_result_view_and_export_as_the_command_line(rpr3, tmp_path):
+    import meshio
+    r = aspects.load(rpr3)
+    r.view(tmp_path / "py.html", largest=2, grid=16)
+    cli("view", rpr3, "--out", str(tmp_path / "cli.html"), "--largest", "2", "--grid", "16")
+    py, _ = page_figure((tmp_path / "py.html").read_text())
+    cl, _ = page_figure((tmp_path / "cli.html").read_text())
+    assert [t["name"] for t in py] == [t["name"] for t in cl] and len(py) == 3
+    assert all(a["x"] == b["x"] and a["i"] == b["i"] for a, b in zip(py, cl))
+    r.export_vtk(tmp_path / "py.vtu", voxels=True, grid=8, csncs=[2, 0])
+    cli("export", rpr3, "--vtk", str(tmp_path / "cli.vtu"), "--voxels", "--grid", "8",
+        "--csnc", "2,0")
+    a, b = meshio.read(str(tmp_path / "py.vtu")), meshio.read(str(tmp_path / "cli.vtu"))
+    assert np.array_equal(a.cells[0].data, b.cells[0].data) and np.array_equal(a.points, b.points)
+    assert a.cell_data["csnc"][0].tolist() == b.cell_data["csnc"][0].tolist()
+    assert set(a.cell_data["csnc"][0].tolist()) == {2, 0}
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda r, d: r.view(d / "v.png"), "out: the view is an HTML page"),
+    (lambda r, d: r.view(d / "v.html", grid=2), "grid: cells per axis, an integer from 4 to 256, got 2"),
+    (lambda r, d: r.view(d / "v.html", axes="x1,x2"), "axes: give 3 variables, got 2"),
+    (lambda r, d: r.export_vtk(d / "m.obj"), "out: give a file name ending in .vtu"),
+    (lambda r, d: r.export_vtk(d / "m.vtu", csncs=[0], largest=2), "csncs and largest"),
+])
+def test_result_view_and_export_bad_options(rpr3, tmp_path, call, message):
+    with pytest.raises(ValueError, match="^" + message.replace("(", r"\(").replace(")", r"\)")):
+        call(aspects.load(rpr3), tmp_path)
+    assert os.listdir(tmp_path) == []
