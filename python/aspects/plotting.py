@@ -434,8 +434,10 @@ def draw_outline(ax, bs, mask, ix, iy, color, grid, zorder=4):
     """The outline of the union of the boxes in mask, from their raster on `grid`."""
     occ = raster.occupancy(grid, bs.lo[mask][:, [ix, iy]], bs.hi[mask][:, [ix, iy]])
     if occ.any():
-        ax.contour(grid.centres(0), grid.centres(1), occ.T.astype(float), levels=[0.5],
-                   colors=[color], linewidths=1.0, zorder=zorder)
+        cs = ax.contour(grid.centres(0), grid.centres(1), occ.T.astype(float), levels=[0.5],
+                        colors=[color], linewidths=1.0, zorder=zorder)
+        for c in cs.collections:
+            c.set_gid("outline")  # in an SVG too
 
 
 def draw_overview(ax, bs, ix, iy, shown, colors, constraint=True, cap=MAX_POLYS):

@@ -114,6 +114,13 @@ def test_plot_states_the_certified_count_then_separated_then_large(rrrrr):
         for i, k in enumerate(RRRRR_DRAWN)]
     overview = colour_collections(panels[0])
     assert len(overview) == 14 and len(set(overview)) == 14
+    # The overview does not overdraw: translucent fills, and an outline in each colour.
+    fills = [c for c in panels[0].collections if isinstance(c, PolyCollection)
+             and matplotlib.colors.to_hex(c.get_facecolors()[0]) in overview]
+    assert [c.get_alpha() for c in fills] == [0.35] * 14
+    outlines = [matplotlib.colors.to_hex(c.get_edgecolors()[0]) for c in panels[0].collections
+                if c.get_gid() == "outline" and len(c.get_paths())]
+    assert outlines == overview
     assert [colour_collections(ax) for ax in panels[1:]] == [[c] for c in overview]
     # The one-box CSNCs get a ring in their colour, visible where the box is a speck.
     for i, k in enumerate(RRRRR_DRAWN):
