@@ -151,6 +151,8 @@ def count_claim(bs):
         return f"exactly {aspects_word(bs.exact)} (certified)"
     if bs.lower_bound is None:
         return "no certified count of aspects recorded"
+    if bs.lower_bound == 0:  # "at least 0" would be true and say nothing
+        return "no aspect separated yet (certified lower bound 0)"
     claim = f"at least {aspects_word(bs.lower_bound)} (certified)"
     if bs.upper_bound is not None:
         claim += f", at most {bs.upper_bound} (certified)"

@@ -162,6 +162,8 @@ def test_plot_exact_or_upper_count_is_said_as_such():
     assert plotting.count_claim(plotting.BoxSet(**kw, lower_bound=2, exact=2)) == \
         "exactly 2 aspects (certified)"
     assert plotting.count_claim(plotting.BoxSet(**kw)) == "no certified count of aspects recorded"
+    assert plotting.count_claim(plotting.BoxSet(**kw, lower_bound=0)) == \
+        "no aspect separated yet (certified lower bound 0)"
 
 
 def test_plot_joint_space_axes(rrrrr):
