@@ -10,12 +10,12 @@
 #include "checkpoint.h"
 #include "cli_usage.h"
 #include "count_command.h"
+#include "figure_cli.h"
 #include "model/model.h"
 #include "model/model_info.h"
 #include "mpi_launcher.h"
 #include "number_text.h"
 #include "path_command.h"
-#include "plot_command.h"
 #include "query_command.h"
 #include "result_index.h"
 #include "solve_command.h"
@@ -34,14 +34,13 @@ struct Commands {
   CLI::App* solve = nullptr;
   CLI::App* query = nullptr;
   CLI::App* path = nullptr;
-  CLI::App* plot = nullptr;
   CLI::App* count = nullptr;
   CLI::App* verify = nullptr;
   std::string info_model;
   SolveOptions solve_options;
   QueryOptions query_options;
   PathOptions path_options;
-  PlotOptions plot_options;
+  FigureCommands figures;  // plot, view, export
   CountOptions count_options;
   VerifyOptions verify_options;
 };
@@ -154,18 +153,6 @@ void add_path(CLI::App& app, Commands& c) {
   path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
 }
 
-void add_plot(CLI::App& app, Commands& c) {
-  PlotOptions& po = c.plot_options;
-  auto* plot = c.plot = app.add_subcommand(
-      "plot", "Draw a result: CSNCs on the pose plane (2 pose variables) or in 3-D (3)");
-  plot->add_option("RESULT_DIR", po.result_dir, "directory written by `aspects solve --out`")
-      ->required();
-  plot->add_option("-o,--out", po.out,
-                   "figure to write, PNG, PDF or SVG by its extension (.png, .pdf, .svg; "
-                   "default: RESULT_DIR/aspects.png)");
-  plot->add_option("--path", po.path, "draw the path of this file (`aspects path --json` output)");
-}
-
 void add_count(CLI::App& app, Commands& c) {
   CountOptions& co = c.count_options;
   auto* count = c.count = app.add_subcommand(
@@ -217,7 +204,7 @@ int run_command(Commands& c) {
   record_given_options(c);
   if (*c.query) return run_query(c.query_options);
   if (*c.path) return run_path(c.path_options);
-  if (*c.plot) return run_plot(c.plot_options);
+  if (figure_command_chosen(c.figures)) return run_figure_command(c.figures);
   if (*c.count) return run_count(c.count_options);
   if (*c.verify) return run_verify(c.verify_options);
   return run_solve(c.solve_options);
@@ -291,7 +278,7 @@ int main(int argc, char** argv) {
   add_solve(app, commands);
   add_query(app, commands);
   add_path(app, commands);
-  add_plot(app, commands);
+  add_figure_commands(app, commands.figures);
   add_count(app, commands);
   add_verify(app, commands);
   try {

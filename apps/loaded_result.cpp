@@ -6,7 +6,7 @@ namespace aspects {
 
 LoadedResult load_result_from(ResultIndex index, const std::string& what) {
   set_working_precision(index.precision_bits);
-  LoadedResult r{std::move(index), Model{}, {}};
+  LoadedResult r{std::move(index), Model{}, {}, {}};
   try {
     r.model = parse_model(r.index.model_source, r.index.model_file);
   } catch (const ModelError& e) {
@@ -23,7 +23,9 @@ LoadedResult load_result(const std::string& result_dir) {
   ResultIndex idx = read_result_index(result_dir);
   const std::vector<std::string> bad = mismatched_files(result_dir, idx);
   if (!bad.empty()) throw IndexError(bad.front());
-  return load_result_from(std::move(idx), result_dir);
+  LoadedResult r = load_result_from(std::move(idx), result_dir);
+  r.directory = result_dir;
+  return r;
 }
 
 std::string certificate_note(const LoadedResult& r) {

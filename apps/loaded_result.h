@@ -16,6 +16,7 @@ struct LoadedResult {
   ResultIndex index;
   Model model;
   std::vector<bool> pose_periodic;  // pose order
+  std::string directory;            // where it was read from (empty: built in memory)
 };
 
 // Reads DIR/aspects.idx and parses its model. Sets the working precision to the

@@ -49,8 +49,9 @@ nlohmann::json read_path(const std::string& file, const LoadedResult& r) {
 int run_plot(const PlotOptions& opts) {
   LoadedResult r = load_result(opts.result_dir);
   nlohmann::json path = opts.path.empty() ? nlohmann::json(nullptr) : read_path(opts.path, r);
+  const nlohmann::json figure = figure_json(opts.figure, r, FigureKind::Plot, !path.is_null());
   const std::string out = opts.out.empty() ? opts.result_dir + "/aspects.png" : opts.out;
-  write_result_plot(r, path, out);
+  write_result_figure(r, path, figure, out);
   std::cout << "wrote " << out << '\n';
   return 0;
 }

@@ -77,7 +77,10 @@ class Run(plotting.BoxSet):
         super().__init__(names, lo, hi, status, csnc, n_kept, robot=self.name,
                          eps=self.summary.get("eps"),
                          pose=[names.index(v) for v in pose_names if v in names],
-                         csnc_count=len(sizes) if sizes is not None else None)
+                         csnc_count=len(sizes) if sizes is not None else None,
+                         lower_bound=self.summary.get("csncs", {}).get("separated_lower_bound"),
+                         representatives=self.summary.get("csncs", {}).get(
+                             "separated_representatives"))
         if sizes is not None:
             self.sizes = list(sizes)
 

@@ -1,20 +1,27 @@
 """Pictures of a result: the project's one plotting code.
 
-`aspects plot`, `aspects path --plot`, `aspects.Result.plot()` and paper_repro/figures.py all
-draw with these functions. The module needs only numpy and matplotlib (not the compiled
-part of the package), so the command line runs it as a script:
+`aspects plot`, `aspects view`, `aspects export`, `aspects path --plot`, `Result.plot()` and
+paper_repro/figures.py draw with these functions (`view` in aspects/view3d.py, `export` in
+aspects/meshes.py). The module needs only numpy and matplotlib (not the compiled part of
+the package), so the command line runs it as a script:
 
-    /usr/bin/python3 plotting.py DATA.json OUT.png
+    /usr/bin/python3 plotting.py DATA.json OUT
 
-where DATA.json (written by apps/plot_data.cpp) names a binary file of the boxes' pose
-parts. An illustration only: nothing drawn here is a claim.
+where DATA.json (written by apps/plot_data.cpp) names a binary file of the boxes (every
+variable; an undecided box's command part is NaN: the index keeps its pose part only),
+says which figure to make ("kind": plot, view or vtk) and with which options. An
+illustration only: nothing drawn here is a claim, except the count in the title, which is
+the run's certified one (summary.json), said as what it is.
 
-- 2 pose variables: every filtered CSNC projected on the pose plane, then one panel per
-  CSNC, undecided boxes on top (as the paper's Fig. 7);
-- 3 or more pose variables: the first three, the undecided boxes and the largest CSNCs
-  in 3-D (as the paper's Fig. 6);
+Every figure first states the certified count ("at least N aspects (certified)"), then
+draws the separated representatives (CSNCs certified to lie in pairwise distinct aspects),
+then the largest other CSNCs, each in its own colour; the undecided boxes are quiet (light
+grey).
+- 2 axes: an overview of the drawn CSNCs (translucent fills and outlines, so that none
+  hides another), then one panel per CSNC;
+- 3 axes: one 3-D panel per CSNC (at most three), the undecided boxes as faint context;
 - 1 pose variable: each CSNC's projection on the pose axis.
-A path (what `aspects path --json` prints) is drawn on top.
+A path (what `aspects path --json` prints) is drawn on top, on pose axes.
 """
 import json
 import math
@@ -31,14 +38,34 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
+try:  # in the package
+    from . import raster
+except ImportError:
+    # Run as a script, or loaded from its path (paper_repro/figures.py): its siblings
+    # (raster, solids, view3d, meshes) are imported from its directory.
+    _here = os.path.dirname(os.path.abspath(__file__))
+    if _here not in sys.path:
+        sys.path.insert(0, _here)
+    import raster
+
 # Box status codes, as aspects.Result.status holds them (1 + the index's undecided kind).
 SOLUTION, NO_EXISTENCE, SINGULAR, CONSTRAINT, UNEXPLORED = 0, 1, 2, 3, 4
 
 DPI = 110
+MIN_DPI, MAX_DPI = 10, 2400
+MAX_INCHES = 100
 MAX_POLYS = 200_000          # rectangles per panel layer before subsampling
-RED = "#d62728"
+DEFAULT_PANELS = 25          # CSNC panels of the 2-D figure unless chosen
+DEFAULT_3D_PANELS = 3
+OUTLINE_CELLS = 400          # raster cells per axis of the overview's outlines
+RED = "#d62728"              # paper_repro's figures only (the paper's colours)
 BLUE = "#1f4fd6"
 GREY = "0.55"
+QUIET = "0.85"               # undecided boxes: light grey, beneath the CSNCs
+QUIET_EDGE = "0.74"
+QUIET_CONSTRAINT = "#cdd6e2"
+QUIET_UNEXPLORED = "0.70"
+OTHER = "#e9dfcb"            # CSNCs that are not drawn one by one
 PATH_COLOR = "k"
 
 
@@ -49,18 +76,31 @@ def rng():
 
 def csnc_colors(n):
     base = list(plt.get_cmap("tab10").colors)
-    base = [c for i, c in enumerate(base) if i != 3]          # no red: red = undecided
+    # No grey (the undecided boxes) and no red (paper_repro's undecided boxes).
+    base = [c for i, c in enumerate(base) if i not in (3, 7)]
     pal = base + list(plt.get_cmap("tab20b").colors)
     return [pal[i % len(pal)] for i in range(n)]
+
+
+def aspects_word(n):
+    return f"{n} aspect{'' if n == 1 else 's'}"
+
+
+def boxes_word(n):
+    return f"{n} box{'' if n == 1 else 'es'}"
 
 
 class BoxSet:
     """Boxes of a result: lower and upper ends (one column per variable in `names`; a
     column may be NaN where the result does not record it), status codes, CSNC (-1 for
-    undecided boxes), and the number of CSNCs the size-ratio filter keeps (the largest)."""
+    undecided boxes), and the number of CSNCs the size-ratio filter keeps (the largest).
+    lower_bound: the certified lower bound on the number of aspects (None: not known);
+    representatives: CSNCs certified to lie in pairwise distinct aspects; exact, upper: a
+    certified exact count or upper bound when one was computed (None: none)."""
 
     def __init__(self, names, lower, upper, status, csnc, filtered, robot="", eps=None,
-                 pose=None, periodic=None, csnc_count=None):
+                 pose=None, periodic=None, csnc_count=None, lower_bound=None,
+                 representatives=(), exact=None, upper_bound=None):
         self.vars = list(names)
         nv = len(self.vars)
         self.lo = np.asarray(lower, dtype=float).reshape(-1, nv)
@@ -81,6 +121,10 @@ class BoxSet:
         self.eps = eps
         self.pose = list(range(nv)) if pose is None else list(pose)
         self.periodic = [False] * nv if periodic is None else list(periodic)
+        self.lower_bound = None if lower_bound is None else int(lower_bound)
+        self.representatives = [int(k) for k in (representatives or [])]
+        self.exact = None if exact is None else int(exact)
+        self.upper_bound = None if upper_bound is None else int(upper_bound)
 
     def col(self, name):
         return self.vars.index(name)
@@ -96,9 +140,99 @@ class BoxSet:
         eps = f", ε = {self.eps:g}" if self.eps is not None else ""
         return f"{self.robot}{eps}"
 
+    def csnc_size(self, k):
+        return int((self.csnc == k).sum())
+
+
+def count_claim(bs):
+    """The certified count, said as what it is: an exact count, or a lower bound (and an
+    upper bound when one was computed); no number when none is known."""
+    if bs.exact is not None:
+        return f"exactly {aspects_word(bs.exact)} (certified)"
+    if bs.lower_bound is None:
+        return "no certified count of aspects recorded"
+    if bs.lower_bound == 0:  # "at least 0" would be true and say nothing
+        return "no aspect separated yet (certified lower bound 0)"
+    claim = f"at least {aspects_word(bs.lower_bound)} (certified)"
+    if bs.upper_bound is not None:
+        claim += f", at most {bs.upper_bound} (certified)"
+    return claim
+
+
+# ------------------------------------------------------------------------------ options
+def resolve_axes(bs, axes=None, counts=(2, 3)):
+    """Column indices of the plotted variables: `axes` (names, or "a,b" text), as many as
+    one of `counts`; when None, the pose's, as many as it has up to max(counts) (x1, x2 of
+    two, x1, x2, x3 of three when it has them). ValueError naming the problem."""
+    if axes is None:
+        n = min(len(bs.pose), max(counts))
+        if n == 0:
+            raise ValueError("the result has no pose variable to plot")
+        if n == 2:
+            return list(bs.workspace_axes())
+        names = [bs.vars[c] for c in bs.pose]
+        if n == 3 and all(v in names for v in ("x1", "x2", "x3")):
+            return [bs.col(v) for v in ("x1", "x2", "x3")]
+        return bs.pose[:n]
+    names = axes.split(",") if isinstance(axes, str) else list(axes)
+    if len(names) not in counts:
+        want = " or ".join(str(c) for c in counts)
+        raise ValueError(f"axes: give {want} variables, got {len(names)} "
+                         f"({', '.join(map(str, names))})")
+    cols = []
+    for n in names:
+        if n not in bs.vars:
+            raise ValueError(f"axes: '{n}' is not a variable of {bs.robot} "
+                             f"(its variables: {', '.join(bs.vars)})")
+        if bs.col(n) in cols:
+            raise ValueError(f"axes: '{n}' is given twice")
+        cols.append(bs.col(n))
+    return cols
+
+
+def choose_csncs(bs, csncs=None, largest=None, most=DEFAULT_PANELS):
+    """The CSNCs to draw, in drawing order: `csncs` as given; else the separated
+    representatives first, then the largest others: the `largest` largest CSNCs, or by
+    default those the filter keeps, `most` in all."""
+    present = sorted(set(bs.csnc[bs.csnc >= 0].tolist()))
+    if csncs is not None:
+        chosen = []
+        for k in csncs:
+            if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
+                raise ValueError(f"csncs: CSNC numbers are integers, got {k!r}")
+            if not 0 <= k < bs.csnc_count:
+                raise ValueError(f"csncs: CSNCs are numbered 0 to {bs.csnc_count - 1} "
+                                 f"(the result has {bs.csnc_count}), got {k}")
+            if k in chosen:
+                raise ValueError(f"csncs: CSNC {k} is given twice")
+            chosen.append(int(k))
+        return chosen
+    reps = [k for k in bs.representatives if k in present]
+    if largest is not None:
+        if isinstance(largest, bool) or not isinstance(largest, (int, np.integer)) or largest < 1:
+            raise ValueError(f"largest: a number of CSNCs, at least 1, got {largest!r}")
+        pool = present[:largest]
+        return [k for k in reps if k in pool] + [k for k in pool if k not in reps]
+    pool = [k for k in present if k < bs.n_kept and k not in reps]
+    return (reps + pool)[:max(most, 1)]
+
+
+def check_dpi_size(dpi, size):
+    if dpi is not None and (isinstance(dpi, bool) or not isinstance(dpi, (int, np.integer))
+                            or not MIN_DPI <= dpi <= MAX_DPI):
+        raise ValueError(f"dpi: an integer from {MIN_DPI} to {MAX_DPI}, got {dpi!r}")
+    if size is not None:
+        ok = isinstance(size, (tuple, list)) and len(size) == 2 and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and 0 < v <= MAX_INCHES
+            for v in size)
+        if not ok:
+            raise ValueError(f"size: (width, height) in inches, each above 0 and at most "
+                             f"{MAX_INCHES}, got {size!r}")
+
 
 def read_data(meta_path):
-    """The BoxSet and the path (or None) of a DATA.json written by apps/plot_data.cpp."""
+    """The BoxSet, the path (or None) and the figure's options (a dict: kind, out, axes,
+    csncs, largest, dpi, size, ...) of a DATA.json written by apps/plot_data.cpp."""
     with open(meta_path) as f:
         d = json.load(f)
     n, k = d["boxes"], len(d["names"])
@@ -119,8 +253,9 @@ def read_data(meta_path):
     if off != len(raw):
         raise ValueError(f"{meta_path}: the binary file has {len(raw)} bytes, expected {off}")
     bs = BoxSet(d["names"], lo, hi, status, csnc, d["filtered"], robot=d["robot"], eps=d["eps"],
-                periodic=d["periodic"], csnc_count=d["csnc_count"])
-    return bs, d.get("path")
+                pose=d["pose"], periodic=d["periodic"], csnc_count=d["csnc_count"],
+                lower_bound=d.get("lower_bound"), representatives=d.get("representatives"))
+    return bs, d.get("path"), d.get("figure") or {}
 
 
 # ------------------------------------------------------------------------------ drawing
@@ -158,12 +293,19 @@ def set_limits(ax, bs, mask, ix, iy, pad=0.03):
     ax.set_ylim(y0 - dy, y1 + dy)
 
 
-def save(fig, out, dpi=DPI):
-    """Writes the figure under a temporary name, then renames it (never a half PNG)."""
+def save(fig, out, dpi=None):
+    """Writes the figure under a temporary name, then renames it (never a half file). The
+    format follows the name's extension (PNG, PDF, SVG, ...)."""
     root, ext = os.path.splitext(out)
     tmp = f"{root}.tmp{os.getpid()}{ext or '.png'}"
-    fig.savefig(tmp, dpi=dpi)
-    os.replace(tmp, out)
+    try:
+        # SVG text as text, not outlines: a paper's editor can change it, a test can read it.
+        with matplotlib.rc_context({"svg.fonttype": "none"}):
+            fig.savefig(tmp, dpi=DPI if dpi is None else dpi)
+        os.replace(tmp, out)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
 
 
 def path_segments(bs, path, cols):
@@ -208,112 +350,209 @@ def path_handles(path):
             Line2D([], [], ls="", marker="*", color="#ffdd00", mec="k", ms=14, label="goal")]
 
 
-def undecided_handles(bs, constraint=True):
+def finite_on(bs, mask, cols):
+    """mask, less the boxes with no extent on one of `cols` (an undecided box on a command
+    variable: the index keeps its pose part only)."""
+    m = mask.copy()
+    for c in cols:
+        m &= ~np.isnan(bs.lo[:, c])
+    return m
+
+
+def undecided_layers(ax, bs, ix, iy, constraint=True, cap=MAX_POLYS, zorder=1):
+    """The undecided boxes, quiet: light grey beneath the CSNCs, with thin grey edges when
+    few enough to tell apart."""
+    def layer(mask, color):
+        n = int(finite_on(bs, mask, (ix, iy)).sum())
+        edge, lw = (QUIET_EDGE, 0.2) if n <= 5000 else (None, 0.0)
+        return add_rects(ax, bs, finite_on(bs, mask, (ix, iy)), ix, iy, color, edge=edge,
+                         lw=lw, cap=cap, zorder=zorder)
+    layer(bs.singular_bd if constraint else bs.singular_bd | bs.constraint_bd, QUIET)
+    if constraint:
+        layer(bs.constraint_bd, QUIET_CONSTRAINT)
+    layer(bs.unexplored, QUIET_UNEXPLORED)
+
+
+def undecided_handles(bs, cols, constraint=True):
     h = []
-    if bs.singular_bd.any():
-        h.append(Patch(color=RED, alpha=0.5, label=f"undecided ({int(bs.singular_bd.sum())} "
-                       "boxes: singular or unresolved)"))
+    shown = finite_on(bs, bs.undecided, cols)
+    if bs.undecided.any() and not shown.any():
+        return [Patch(color="w", label=f"undecided boxes ({int(bs.undecided.sum())}) not drawn: "
+                      "the result keeps their pose part only")]
+    singular = bs.singular_bd if constraint else bs.singular_bd | bs.constraint_bd
+    if singular.any():
+        h.append(Patch(facecolor=QUIET, edgecolor=QUIET_EDGE, label=f"undecided "
+                       f"({int(singular.sum())} boxes: singular or unresolved)"))
     if constraint and bs.constraint_bd.any():
-        h.append(Patch(color=BLUE, alpha=0.5, label=f"constraint boundary "
-                       f"({int(bs.constraint_bd.sum())} boxes)"))
+        h.append(Patch(facecolor=QUIET_CONSTRAINT, edgecolor=QUIET_EDGE, label="constraint "
+                       f"boundary ({int(bs.constraint_bd.sum())} boxes)"))
     if bs.unexplored.any():
-        h.append(Patch(color=GREY, alpha=0.5, label=f"unexplored ({int(bs.unexplored.sum())} "
-                       "boxes: the run was stopped)"))
+        h.append(Patch(facecolor=QUIET_UNEXPLORED, edgecolor=QUIET_EDGE, label="unexplored "
+                       f"({int(bs.unexplored.sum())} boxes: the run was stopped)"))
     return h
 
 
-def csnc_grid(bs, title, constraint=True, obstacle=None, max_panels=26, undecided_on_top=True,
-              path=None, legend_csncs=10):
-    """Overview (all kept CSNCs) + one panel per kept CSNC, with the undecided boxes on top
-    (so that singularity curves show across the projected CSNCs, as in the paper), or
-    beneath when they cover most of the projected workspace (coarse 3-RRR* runs)."""
+def csnc_label(bs, k):
+    sep = ", separated" if k in bs.representatives else ""
+    return f"CSNC {k} ({boxes_word(bs.csnc_size(k))}){sep}"
+
+
+def csnc_handles(bs, shown, colors, legend_csncs=None):
+    n = len(shown) if legend_csncs is None else legend_csncs
+    h = [Patch(facecolor=colors[j], edgecolor=colors[j], label=csnc_label(bs, k))
+         for j, k in enumerate(shown[:n])]
+    if len(shown) > n:
+        h.append(Patch(color="w", label=f"... {len(shown) - n} more CSNCs drawn"))
+    others = bs.solution & (bs.csnc >= 0) & ~np.isin(bs.csnc, shown)
+    if others.any():
+        count = len(set(bs.csnc[others].tolist()))
+        h.append(Patch(color=OTHER, label=f"{count} other CSNC{'s' if count > 1 else ''} "
+                       f"({boxes_word(int(others.sum()))}), not drawn one by one"))
+    return h
+
+
+def drawn_line(bs, shown, cols):
+    """What the figure draws, for its title's second line."""
+    reps = sum(1 for k in shown if k in bs.representatives)
+    sep = f", the {reps} separated first (certified in pairwise distinct aspects)" if reps else ""
+    where = ", ".join(bs.vars[c] for c in cols)
+    return f"{len(shown)} of {bs.csnc_count} CSNCs drawn{sep}; on ({where})"
+
+
+TINY_CSNC = 10               # boxes: at most this many get a ring around each (visible)
+
+
+def ring_tiny(ax, bs, mask, ix, iy, color, zorder=4.5):
+    """A ring around each box of a CSNC of at most TINY_CSNC boxes, which would otherwise
+    be a speck (RRRRR at eps 0.5: two separated CSNCs of one box each)."""
+    if 0 < int(mask.sum()) <= TINY_CSNC:
+        cx = 0.5 * (bs.lo[mask, ix] + bs.hi[mask, ix])
+        cy = 0.5 * (bs.lo[mask, iy] + bs.hi[mask, iy])
+        ax.scatter(cx, cy, s=90, facecolors="none", edgecolors=[color], linewidths=1.4,
+                   zorder=zorder)
+
+
+def draw_outline(ax, bs, mask, ix, iy, color, grid, zorder=4):
+    """The outline of the union of the boxes in mask, from their raster on `grid`."""
+    occ = raster.occupancy(grid, bs.lo[mask][:, [ix, iy]], bs.hi[mask][:, [ix, iy]])
+    if occ.any():
+        cs = ax.contour(grid.centres(0), grid.centres(1), occ.T.astype(float), levels=[0.5],
+                        colors=[color], linewidths=1.0, zorder=zorder)
+        for c in cs.collections:
+            c.set_gid("outline")  # in an SVG too
+
+
+def draw_overview(ax, bs, ix, iy, shown, colors, constraint=True, cap=MAX_POLYS):
+    """Every drawn CSNC on one panel without hiding one behind another: translucent fills
+    and an outline each; the other CSNCs pale beneath; the undecided boxes quiet."""
+    undecided_layers(ax, bs, ix, iy, constraint, cap=cap, zorder=1)
+    add_rects(ax, bs, bs.solution & (bs.csnc >= 0) & ~np.isin(bs.csnc, shown), ix, iy, OTHER,
+              cap=cap, zorder=1.5)
+    drawn = bs.solution & np.isin(bs.csnc, shown)
+    if not drawn.any():
+        return
+    grid = raster.Grid.around(bs.lo[drawn][:, [ix, iy]], bs.hi[drawn][:, [ix, iy]],
+                              OUTLINE_CELLS)
+    for j, k in enumerate(shown):
+        m = bs.csnc == k
+        add_rects(ax, bs, m, ix, iy, colors[j], alpha=0.35, cap=cap, zorder=2)
+        draw_outline(ax, bs, m, ix, iy, colors[j], grid)
+        ring_tiny(ax, bs, m, ix, iy, colors[j])
+
+
+def decorate_2d(ax, bs, ix, iy, obstacle=None):
     from matplotlib.patches import Circle
-    ix, iy = bs.workspace_axes()
-    kept_ids = sorted(set(bs.csnc[bs.kept].tolist()))
-    shown = kept_ids[:max_panels]
+    set_limits(ax, bs, finite_on(bs, np.ones(len(bs.status), bool), (ix, iy)), ix, iy)
+    if ix in bs.pose and iy in bs.pose:
+        ax.set_aspect("equal")
+    if obstacle is not None:
+        ax.add_patch(Circle(obstacle[:2], obstacle[2], color="k", zorder=6))
+    ax.tick_params(labelsize=7)
+    ax.set_xlabel(bs.vars[ix], fontsize=8)
+    ax.set_ylabel(bs.vars[iy], fontsize=8)
+
+
+def check_path_axes(bs, path, cols):
+    if path and path.get("waypoints") and not all(c in bs.pose for c in cols):
+        raise ValueError("path: a path is drawn in pose coordinates, and "
+                         f"{', '.join(bs.vars[c] for c in cols if c not in bs.pose)} "
+                         "is not a pose variable (leave the path out, or choose pose axes)")
+
+
+def csnc_grid(bs, title, constraint=True, obstacle=None, max_panels=DEFAULT_PANELS + 1,
+              undecided_on_top=True, path=None, legend_csncs=10, axes=None, csncs=None,
+              largest=None, size=None):
+    """The overview of the drawn CSNCs (draw_overview), then one panel per CSNC with the
+    undecided boxes quiet beneath. undecided_on_top is kept for paper_repro's calls: the
+    undecided boxes are always beneath now."""
+    del undecided_on_top
+    ix, iy = resolve_axes(bs, axes, counts=(2,))
+    check_path_axes(bs, path, (ix, iy))
+    shown = choose_csncs(bs, csncs, largest, most=max_panels - 1)
     path_csnc = path.get("csnc") if path and path.get("waypoints") else None
-    colors = csnc_colors(len(kept_ids))
+    colors = csnc_colors(len(shown))
     npan = 1 + len(shown)
     ncol = min(npan, 6 if npan > 12 else (4 if npan > 4 else npan))
     nrow = (npan + ncol - 1) // ncol
     side = 6.0 if npan == 1 else (3.4 if npan <= 12 else 2.6)
-    extent = ~np.isnan(bs.lo[:, ix])
-    xr = np.nanmax(bs.hi[:, ix]) - np.nanmin(bs.lo[:, ix]) if extent.any() else 1.0
-    yr = np.nanmax(bs.hi[:, iy]) - np.nanmin(bs.lo[:, iy]) if extent.any() else 1.0
+    extent = finite_on(bs, np.ones(len(bs.status), bool), (ix, iy))
+    xr = np.nanmax(bs.hi[extent, ix]) - np.nanmin(bs.lo[extent, ix]) if extent.any() else 1.0
+    yr = np.nanmax(bs.hi[extent, iy]) - np.nanmin(bs.lo[extent, iy]) if extent.any() else 1.0
     ratio = yr / xr if xr > 0 else 1.0
     pw, ph = (side, max(0.45 * side, side * ratio)) if ratio < 1 else \
         (max(0.45 * side, side / ratio), side)
     pw += 0.45
-    fig, axes = plt.subplots(nrow, ncol, figsize=(pw * ncol + 0.4, (ph + 0.45) * nrow + 1.6),
-                             squeeze=False)
-    for ax in axes.flat[npan:]:
+    figsize = size or (pw * ncol + 0.4, (ph + 0.45) * nrow + 1.9)
+    fig, axs = plt.subplots(nrow, ncol, figsize=figsize, squeeze=False)
+    for ax in axs.flat[npan:]:
         ax.axis("off")
-    und_cap = max(10_000, min(MAX_POLYS, 600_000 // npan))
-    uz = 3 if undecided_on_top else 1
+    cap = max(10_000, min(MAX_POLYS, 600_000 // npan))
 
-    def undecided_layers(ax, alpha):
-        nr = add_rects(ax, bs, bs.singular_bd, ix, iy, RED, alpha=alpha, cap=und_cap, zorder=uz)
-        nb = (0, 0)
-        if constraint:
-            nb = add_rects(ax, bs, bs.constraint_bd, ix, iy, BLUE, alpha=alpha, cap=und_cap,
-                           zorder=uz + 0.5)
-        add_rects(ax, bs, bs.unexplored, ix, iy, GREY, alpha=alpha, cap=und_cap, zorder=uz)
-        return nr, nb
-
-    def decorate(ax):
-        set_limits(ax, bs, extent, ix, iy)
-        ax.set_aspect("equal")
-        if obstacle is not None:
-            ax.add_patch(Circle(obstacle[:2], obstacle[2], color="k", zorder=6))
-        ax.tick_params(labelsize=7)
-        ax.set_xlabel(bs.vars[ix], fontsize=8)
-        ax.set_ylabel(bs.vars[iy], fontsize=8)
-
-    ax0 = axes.flat[0]
-    # Filtered-out CSNCs (the size-ratio heuristic's small ones) in light grey beneath.
-    add_rects(ax0, bs, bs.solution & ~bs.kept, ix, iy, "0.82", zorder=1.5)
-    for j, k in enumerate(kept_ids):
-        add_rects(ax0, bs, bs.csnc == k, ix, iy, colors[j], zorder=2)
-    nr, nb = undecided_layers(ax0, 0.35)
-    decorate(ax0)
+    ax0 = axs.flat[0]
+    draw_overview(ax0, bs, ix, iy, shown, colors, constraint, cap=cap)
+    decorate_2d(ax0, bs, ix, iy, obstacle)
     if path_csnc is not None:
         draw_path_2d(ax0, bs, path, ix, iy)
-    sub = []
-    if nr[0] < nr[1]:
-        sub.append(f"red subsampled {nr[0]}/{nr[1]}")
-    if nb[0] < nb[1]:
-        sub.append(f"blue subsampled {nb[0]}/{nb[1]}")
-    ax0.set_title(f"all {len(kept_ids)} kept CSNCs" + (f"\n({', '.join(sub)})" if sub else ""),
-                  fontsize=9)
+    ax0.set_title(f"the {len(shown)} drawn CSNCs together", fontsize=9)
     for j, k in enumerate(shown):
-        ax = axes.flat[1 + j]
-        m = bs.csnc == k
-        add_rects(ax, bs, m, ix, iy, colors[j], zorder=2)
-        undecided_layers(ax, 0.5)
-        decorate(ax)
+        ax = axs.flat[1 + j]
+        undecided_layers(ax, bs, ix, iy, constraint, cap=cap, zorder=1)
+        add_rects(ax, bs, bs.csnc == k, ix, iy, colors[j], zorder=2)
+        ring_tiny(ax, bs, bs.csnc == k, ix, iy, colors[j])
+        decorate_2d(ax, bs, ix, iy, obstacle)
         if k == path_csnc:
             draw_path_2d(ax, bs, path, ix, iy)
-        ax.set_title(f"CSNC {k}: {int(m.sum())} boxes", fontsize=8)
-    handles = [Patch(color=colors[j], label=f"CSNC {k} ({int((bs.csnc == k).sum())} boxes)")
-               for j, k in enumerate(kept_ids[:legend_csncs])]
-    if len(kept_ids) > legend_csncs:
-        handles.append(Patch(color="w", label=f"... {len(kept_ids) - legend_csncs} more "
-                             "kept CSNCs"))
-    if (bs.solution & ~bs.kept).any():
-        handles.append(Patch(color="0.82", label=f"{bs.csnc_count - len(kept_ids)} CSNCs "
-                             "filtered out (small)"))
-    handles += undecided_handles(bs, constraint) + path_handles(path)
+        sep = ", separated" if k in bs.representatives else ""
+        ax.set_title(f"CSNC {k}: {boxes_word(bs.csnc_size(k))}{sep}", fontsize=8)
+    handles = csnc_handles(bs, shown, colors, legend_csncs)
+    handles += undecided_handles(bs, (ix, iy), constraint) + path_handles(path)
     if obstacle is not None:
         handles.append(Patch(color="k", label="obstacle"))
-    more = f" (first {len(shown)} of {len(kept_ids)} shown)" if len(shown) < len(kept_ids) else ""
-    fig.suptitle(f"{title}{bs.title()}: {len(kept_ids)} filtered CSNCs of {bs.csnc_count} "
-                 f"projected on ({bs.vars[ix]}, {bs.vars[iy]}){more}", fontsize=11)
+    fig.suptitle(f"{title}{bs.title()}: {count_claim(bs)}\n{drawn_line(bs, shown, (ix, iy))}",
+                 fontsize=11)
     ncols_leg = 1 if npan == 1 else min(4, max(1, len(handles) // 3 + 1))
     fig.legend(handles=handles, loc="lower center", ncol=ncols_leg, fontsize=8, frameon=False)
     legend_rows = math.ceil(len(handles) / ncols_leg)
     bottom = min(0.45, (0.22 * legend_rows + 0.1) / fig.get_figheight())
-    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.5 / fig.get_figheight()), h_pad=1.5)
+    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.75 / fig.get_figheight()), h_pad=2.2)
     return fig
+
+
+def draw_into(ax, bs, cols, path=None, csncs=None, largest=None, title=""):
+    """The overview alone, into a given matplotlib axes (Result.plot(ax=...)): the drawn
+    CSNCs, the undecided boxes, the path, a legend, and the count as the axes' title."""
+    ix, iy = cols
+    check_path_axes(bs, path, cols)
+    shown = choose_csncs(bs, csncs, largest)
+    colors = csnc_colors(len(shown))
+    draw_overview(ax, bs, ix, iy, shown, colors)
+    decorate_2d(ax, bs, ix, iy)
+    if path and path.get("waypoints"):
+        draw_path_2d(ax, bs, path, ix, iy)
+    handles = csnc_handles(bs, shown, colors) + undecided_handles(bs, cols) + path_handles(path)
+    ax.legend(handles=handles, fontsize=7, loc="best")
+    ax.set_title(f"{title}{bs.title()}: {count_claim(bs)}", fontsize=9)
+    return ax.figure
 
 
 def cuboid_faces(lo, hi):
@@ -351,39 +590,33 @@ def draw_3d(ax, bs, mask, cols, color, max_cuboids=2500, max_points=60000, alpha
     return len(idx), how
 
 
-def csnc_3d(bs, title, path=None, largest=2):
-    """Three pose coordinates in 3-D: the undecided boxes, then the largest CSNCs (and the
-    path's CSNC with the path, when it is not among them)."""
-    names = [bs.vars[c] for c in bs.pose]
-    cols = [bs.col(v) for v in ("x1", "x2", "x3")] if all(
-        v in names for v in ("x1", "x2", "x3")) else bs.pose[:3]
-    ids = sorted(set(bs.csnc[bs.csnc >= 0].tolist()))[:largest]
+def csnc_3d(bs, title, path=None, largest=None, axes=None, csncs=None, size=None):
+    """Three variables in 3-D: one panel per drawn CSNC (the separated first, at most
+    DEFAULT_3D_PANELS unless chosen), the undecided boxes as faint grey context, and the
+    path's CSNC with the path when it is not among them. For turning it: `aspects view`."""
+    cols = resolve_axes(bs, axes, counts=(3,))
+    check_path_axes(bs, path, cols)
+    ids = choose_csncs(bs, csncs, largest, most=DEFAULT_3D_PANELS)
     path_csnc = path.get("csnc") if path and path.get("waypoints") else None
     if path_csnc is not None and path_csnc not in ids:
         ids.append(path_csnc)
-    panels = [("undecided boxes", bs.undecided, RED, None)]
     cc = csnc_colors(len(ids))
-    for j, k in enumerate(ids):
-        kept = k < bs.n_kept
-        panels.append((f"CSNC {k} ({'kept' if kept else 'filtered out'})", bs.csnc == k, cc[j],
-                       k))
-    fig = plt.figure(figsize=(4.4 * len(panels), 5.0))
-    known = ~np.isnan(bs.lo[:, cols[0]])
+    fig = plt.figure(figsize=size or (4.6 * max(1, len(ids)), 5.4))
+    known = finite_on(bs, np.ones(len(bs.status), bool), cols)
     lim = [(np.nanmin(bs.lo[known, c]), np.nanmax(bs.hi[known, c])) if known.any() else (0, 1)
            for c in cols]
-    und = np.flatnonzero(bs.undecided)
+    und = np.flatnonzero(finite_on(bs, bs.undecided, cols))
     ctx = rng().choice(und, size=min(len(und), 15000), replace=False) if len(und) else und
-    for i, (label, m, color, k) in enumerate(panels):
-        ax = fig.add_subplot(1, len(panels), i + 1, projection="3d")
-        on_path = k is not None and k == path_csnc
+    for i, k in enumerate(ids):
+        ax = fig.add_subplot(1, len(ids), i + 1, projection="3d")
+        on_path = k == path_csnc
         if on_path:
             # Drawn in call order, so the path stays visible in front of the boxes.
             ax.computed_zorder = False
-        n, how = draw_3d(ax, bs, m, cols, color, alpha=0.2 if on_path else 0.55)
-        if i > 0 and len(ctx):
-            # Faint context: where the workspace is (undecided box centres, subsampled).
+        n, how = draw_3d(ax, bs, bs.csnc == k, cols, cc[i], alpha=0.2 if on_path else 0.55)
+        if len(ctx):
             c = 0.5 * (bs.lo[ctx][:, cols] + bs.hi[ctx][:, cols])
-            ax.scatter(c[:, 0], c[:, 1], c[:, 2], s=0.4, c="0.5", alpha=0.15,
+            ax.scatter(c[:, 0], c[:, 1], c[:, 2], s=0.4, c=QUIET_UNEXPLORED, alpha=0.12,
                        depthshade=False, linewidths=0)
         if on_path:
             segs = path_segments(bs, path, cols)
@@ -401,40 +634,40 @@ def csnc_3d(bs, title, path=None, largest=2):
         ax.set_xlabel(bs.vars[cols[0]])
         ax.set_ylabel(bs.vars[cols[1]])
         ax.set_zlabel(bs.vars[cols[2]])
-        ax.set_title(f"{label}: {n} {how}", fontsize=9)
+        sep = ", separated" if k in bs.representatives else ""
+        ax.set_title(f"CSNC {k}{sep}: {n} {how}", fontsize=9)
         ax.view_init(elev=22, azim=-60)
-    extra = f" (first three of {len(bs.pose)} pose variables)" if len(bs.pose) > 3 else ""
-    fig.suptitle(f"{title}{bs.title()}: pose space ({', '.join(bs.vars[c] for c in cols)})"
-                 f"{extra}; undecided boxes, then the {min(largest, len(ids))} largest of "
-                 f"{bs.csnc_count} CSNCs ({bs.n_kept} kept by the filter)", fontsize=10)
-    handles = [Patch(color=RED, label="undecided boxes")] + \
-        [Patch(color=cc[j], label=f"CSNC {k}") for j, k in enumerate(ids)] + \
-        [Patch(color="0.5", alpha=0.4, label="undecided box centres (context)")] + \
-        path_handles(path)
-    fig.legend(handles=handles, loc="lower center", ncol=min(6, len(handles)), fontsize=8,
+    fig.suptitle(f"{title}{bs.title()}: {count_claim(bs)}\n{drawn_line(bs, ids, cols)}",
+                 fontsize=10)
+    handles = csnc_handles(bs, ids, cc)
+    if len(ctx):
+        handles.append(Patch(color=QUIET_UNEXPLORED, alpha=0.4,
+                             label="undecided box centres (context)"))
+    handles += path_handles(path)
+    fig.legend(handles=handles, loc="lower center", ncol=min(4, len(handles)), fontsize=8,
                frameon=False)
-    fig.subplots_adjust(left=0.01, right=0.97, top=0.86, bottom=0.1, wspace=0.05)
+    fig.subplots_adjust(left=0.01, right=0.97, top=0.84, bottom=0.12, wspace=0.05)
     return fig
 
 
-def csnc_strips(bs, title, path=None):
+def csnc_strips(bs, title, path=None, csncs=None, largest=None, size=None):
     """One pose variable: each CSNC's projection on the pose axis, one row per CSNC."""
     c = bs.pose[0]
-    ids = sorted(set(bs.csnc[bs.csnc >= 0].tolist()))[:30]
+    ids = choose_csncs(bs, csncs, largest, most=30)
     colors = csnc_colors(len(ids))
-    fig, ax = plt.subplots(figsize=(9, 1.2 + 0.35 * (len(ids) + 1)))
+    fig, ax = plt.subplots(figsize=size or (9, 1.6 + 0.35 * (len(ids) + 1)))
     for j, k in enumerate(ids):
         m = bs.csnc == k
         for a, b in zip(bs.lo[m, c], bs.hi[m, c]):
             ax.plot([a, b], [j, j], color=colors[j], lw=6, solid_capstyle="butt")
     m = bs.undecided
     for a, b in zip(bs.lo[m, c], bs.hi[m, c]):
-        ax.plot([a, b], [-1, -1], color=RED, lw=6, solid_capstyle="butt")
+        ax.plot([a, b], [-1, -1], color=QUIET, lw=4, solid_capstyle="butt")
     ax.set_yticks([-1] + list(range(len(ids))))
-    ax.set_yticklabels(["undecided"] + [f"CSNC {k}{'' if k < bs.n_kept else ' (filtered)'}"
-                                        for k in ids], fontsize=8)
+    ax.set_yticklabels(["undecided"] + [csnc_label(bs, k) for k in ids], fontsize=8)
     ax.set_xlabel(bs.vars[c])
-    ax.set_title(f"{title}{bs.title()}: the CSNCs projected on {bs.vars[c]}", fontsize=10)
+    ax.set_title(f"{title}{bs.title()}: {count_claim(bs)}\n{drawn_line(bs, ids, [c])}",
+                 fontsize=10)
     if path and path.get("waypoints"):
         xs = [w["pose"][0] for w in path["waypoints"]]
         k = path.get("csnc")
@@ -445,28 +678,63 @@ def csnc_strips(bs, title, path=None):
     return fig
 
 
-def plot(bs, out=None, path=None, title=""):
-    """The figure of a result (see the module's docstring); saved to `out` when given.
-    Returns the matplotlib Figure."""
-    if len(bs.pose) >= 3:
-        fig = csnc_3d(bs, title, path=path)
-    elif len(bs.pose) == 2:
-        fig = csnc_grid(bs, title, path=path)
-    elif len(bs.pose) == 1:
-        fig = csnc_strips(bs, title, path=path)
+def plot(bs, out=None, path=None, title="", axes=None, csncs=None, largest=None, dpi=None,
+         size=None, ax=None):
+    """The figure of a result (see the module's docstring); saved to `out` when given (the
+    format from its extension). axes: two or three variable names (pose or command), as a
+    list or "a,b" text; csncs: the CSNCs to draw (numbers), or largest: the N largest;
+    dpi; size: (width, height) in inches; ax: a 2-D matplotlib axes to draw the overview
+    into (two axes only). Returns the matplotlib Figure. ValueError for a bad option."""
+    check_dpi_size(dpi, size)
+    if csncs is not None and largest is not None:
+        raise ValueError("csncs and largest: give one of them")
+    if axes is None and len(bs.pose) == 1:
+        if ax is not None:
+            raise ValueError("ax: the figure of one pose variable has its own axes")
+        fig = csnc_strips(bs, title, path=path, csncs=csncs, largest=largest, size=size)
     else:
-        raise ValueError("the result has no pose variable to plot")
+        cols = resolve_axes(bs, axes, counts=(2, 3))
+        if ax is not None:
+            if len(cols) != 2:
+                raise ValueError("ax: draws two axes; give axes= two variables (3-D: "
+                                 "`aspects view`)")
+            fig = draw_into(ax, bs, cols, path=path, csncs=csncs, largest=largest, title=title)
+        elif len(cols) == 3:
+            fig = csnc_3d(bs, title, path=path, largest=largest,
+                          axes=[bs.vars[c] for c in cols], csncs=csncs, size=size)
+        else:
+            fig = csnc_grid(bs, title, path=path, axes=[bs.vars[c] for c in cols],
+                            csncs=csncs, largest=largest, size=size)
     if out:
-        save(fig, out)
+        save(fig, out, dpi)
     return fig
+
+
+def _sibling(name):
+    """aspects.NAME in the package, NAME when run as a script from this directory."""
+    import importlib
+    return importlib.import_module(f".{name}", __package__) if __package__ else \
+        importlib.import_module(name)
 
 
 def main(argv):
     if len(argv) != 3:
-        sys.exit("usage: plotting.py DATA.json OUT.png")
-    bs, path = read_data(argv[1])
-    fig = plot(bs, out=argv[2], path=path)
-    plt.close(fig)
+        sys.exit("usage: plotting.py DATA.json OUT")
+    bs, path, opt = read_data(argv[1])
+    kind = opt.get("kind", "plot")
+    size = tuple(opt["size"]) if opt.get("size") else None
+    common = dict(axes=opt.get("axes"), csncs=opt.get("csncs"), largest=opt.get("largest"))
+    if kind == "plot":
+        fig = plot(bs, out=argv[2], path=path, dpi=opt.get("dpi"), size=size, **common)
+        plt.close(fig)
+    elif kind == "view":
+        _sibling("view3d").write_view(bs, argv[2], voxels=opt.get("voxels", False),
+                                      cells=opt.get("cells"), **common)
+    elif kind == "vtk":
+        _sibling("meshes").write_vtk(bs, argv[2], voxels=opt.get("voxels", False),
+                                     cells=opt.get("cells"), **common)
+    else:
+        sys.exit(f"plotting.py: unknown figure kind {kind!r}")
 
 
 if __name__ == "__main__":

@@ -200,10 +200,16 @@ class Result:
                                  "run; solve again)")
         return verdict
 
-    def plot(self, out=None, path=None, title=""):
-        """The figure of `aspects plot` (aspects.plotting): 2 pose variables, the CSNCs on
-        the pose plane; 3, in 3-D. `path`: a dict from path() or a file of `aspects path
-        --json` output. Saved to `out` when given; returns the matplotlib Figure."""
+    def plot(self, out=None, path=None, title="", *, axes=None, csncs=None, largest=None,
+             dpi=None, size=None, ax=None):
+        """The figure of `aspects plot` (aspects.plotting): the certified count in the
+        title, then the separated representatives and the largest CSNCs, each in its own
+        colour, the undecided boxes quiet. axes: two variables (pose or command, e.g.
+        ["q1", "q2"]) or three (3-D); default: the pose's. csncs: the CSNC numbers to draw,
+        or largest: the N largest. dpi, size=(width, height) in inches. ax: a matplotlib
+        axes to draw the overview into (two axes). `path`: a dict from path() or a file of
+        `aspects path --json` output. Saved to `out` when given (PNG, PDF, SVG: from the
+        extension); returns the matplotlib Figure. ValueError for a bad option."""
         from . import plotting
         if isinstance(path, PathResult):  # Result.path's answer
             path = path.to_dict()
@@ -212,13 +218,43 @@ class Result:
                 path = json.load(f)
         if path is not None and not isinstance(path, dict):
             raise TypeError("path must be a dict from Result.path() or a file name")
-        cols = [self.variables.index(v) for v in self.pose_variables]
-        bs = plotting.BoxSet(self.pose_variables, self.lower[:, cols], self.upper[:, cols],
-                             self.status, self.csnc, self._core.filtered_count, robot=self.robot,
-                             eps=self.eps, periodic=self._core.pose_periodic,
-                             csnc_count=self._core.csnc_count)
-        return plotting.plot(bs, out=None if out is None else os.fspath(out), path=path,
-                             title=title)
+        return plotting.plot(self._box_set(), out=None if out is None else os.fspath(out),
+                             path=path, title=title, axes=axes, csncs=csncs, largest=largest,
+                             dpi=dpi, size=size, ax=ax)
+
+    def view(self, out, *, axes=None, csncs=None, largest=None, voxels=False, grid=None):
+        """Writes `out`, the HTML page of `aspects view` (plotly): the CSNCs of three
+        variables (default: a 3-DOF robot's pose) as surfaces, or voxels, that turn in a
+        browser. grid: raster cells per axis (4 to 256, default 64). ValueError for a bad
+        option."""
+        from . import view3d
+        view3d.write_view(self._box_set(), os.fspath(out), axes=axes, csncs=csncs,
+                          largest=largest, voxels=voxels, cells=grid)
+
+    def export_vtk(self, out, *, axes=None, csncs=None, largest=None, voxels=False, grid=None):
+        """Writes `out` (.vtu or .vtk), the file of `aspects export --vtk` (meshio): the
+        CSNCs as triangles, or hexahedra with voxels=True, with the cell fields "csnc" and
+        "separated". Options as view()."""
+        from . import meshes
+        meshes.write_vtk(self._box_set(), os.fspath(out), axes=axes, csncs=csncs,
+                         largest=largest, voxels=voxels, cells=grid)
+
+    def _box_set(self):
+        """The boxes for aspects.plotting: every variable, with the run's certified count."""
+        from . import plotting
+        names = list(self.variables)
+        s = self.summary or {}
+        csncs = s.get("csncs", {})
+        return plotting.BoxSet(names, self.lower, self.upper, self.status, self.csnc,
+                               self._core.filtered_count, robot=self.robot, eps=self.eps,
+                               pose=[names.index(v) for v in self.pose_variables],
+                               periodic=[v in self._periodic_pose() for v in names],
+                               csnc_count=self._core.csnc_count,
+                               lower_bound=csncs.get("separated_lower_bound"),
+                               representatives=csncs.get("separated_representatives"))
+
+    def _periodic_pose(self):
+        return {v for v, p in zip(self.pose_variables, self._core.pose_periodic) if p}
 
 
 def _pose(pose, what):
