@@ -101,6 +101,26 @@ def match(expected, actual):
     return None if go(0, 0) else furthest[0]
 
 
+def check_matcher():
+    """The normalisation itself, so that the test cannot pass by matching anything."""
+    lines = lambda *ts: [(i, s) for i, s in enumerate(ts)]
+    cases = [
+        (lines("a", "b"), ["a", "b"], None),
+        (lines("a", "b"), ["a", "c"], 1),
+        (lines("a"), ["a", "b"], 1),            # extra actual lines fail
+        (lines("a", "b"), ["a"], 1),            # missing actual lines fail
+        (lines("a", "...", "d"), ["a", "b", "c", "d"], None),
+        (lines("a", "...", "d"), ["a", "d"], None),
+        (lines("time: ... s"), ["time: 1.5 s"], None),
+        (lines("time: ... s"), ["time: 1.5 ms"], 0),
+        (lines("x [...] y"), ["x [1, 2] y  "], None),  # trailing spaces ignored
+        (lines("a.b"), ["axb"], 0),             # no other pattern character
+    ]
+    for expected, actual, want in cases:
+        got = match(expected, actual)
+        assert got == want, (expected, actual, got, want)
+
+
 def scratch_tree(source, build):
     root = tempfile.mkdtemp(prefix="doc_examples.")
     for name in os.listdir(source):
@@ -177,6 +197,7 @@ def main(argv):
     if len(argv) < 3:
         print(__doc__, file=sys.stderr)
         return 2
+    check_matcher()
     source, build = os.path.abspath(argv[1]), os.path.abspath(argv[2])
     files = argv[3:] or [os.path.join(source, "README.md")] + sorted(
         os.path.join(source, "docs", f) for f in os.listdir(os.path.join(source, "docs"))
