@@ -2,11 +2,14 @@
 """Runs every example of README.md and docs/*.md and compares its output (ctest
 `cli.doc_examples`), so that the documentation cannot go stale.
 
-    doc_examples.py SOURCE_DIR BUILD_DIR [FILE.md ...]
+    doc_examples.py SOURCE_DIR BUILD_DIR [--python=DIR] [FILE.md ...]
 
 An example is a fenced block (``` ... ```) with a line `$ ./build/...`. Each line that
 starts with `$ ` is a command, run by bash; the lines under it, up to the next command,
-are its expected standard output. Normalisation, and nothing else:
+are its expected standard output. With --python=DIR (the build tree's package, given when
+the module is built), a fenced block with `>>> ` lines is run by doctest too (option
+ELLIPSIS: `...` in an expected output matches any text), PYTHONPATH=DIR.
+Normalisation of the `$ ` examples, and nothing else:
 - trailing spaces are ignored;
 - a line `...` matches any number of lines (none included);
 - `...` within a line matches any text on that line (times, hashes, versions, elided
@@ -50,6 +53,50 @@ def blocks(path):
                 # Blocks inside list items are indented; the indentation is not output.
                 body.append((n, line[indent:] if line[:indent].strip() == "" else line))
     return out
+
+
+PY_RUNNER = r"""
+import doctest, sys
+text, name, lineno = open(sys.argv[1]).read(), sys.argv[2], int(sys.argv[3])
+test = doctest.DocTestParser().get_doctest(text, {}, name, name, lineno)
+runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+runner.run(test)
+sys.exit(1 if runner.failures else 0)
+"""
+
+
+def python_blocks(path):
+    """[(line of the opening fence, text)] of the blocks with `>>> ` lines."""
+    return [(start, "\n".join(text for _, text in body) + "\n")
+            for start, body in blocks(path)
+            if any(text.startswith(">>> ") for _, text in body)]
+
+
+def run_python(rel, root, env, python_dir, build, start, text):
+    """Runs one `>>>` block by doctest; returns True when it passed."""
+    script = os.path.join(root, ".doc_block.py")
+    with open(script, "w", encoding="utf-8") as f:
+        f.write(text)
+    env = dict(env, PYTHONPATH=python_dir, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1",
+               ASPECTS_EXE=os.path.join(build, "apps", "aspects"),
+               ASPECTS_CHECK_CERT=os.path.join(build, "certificates", "check_cert"))
+    t0 = time.monotonic()
+    try:
+        p = subprocess.run(["/usr/bin/python3", "-c", PY_RUNNER, script, rel, str(start)],
+                           cwd=root, env=env, capture_output=True, text=True,
+                           timeout=COMMAND_TIMEOUT)
+        code, out = p.returncode, p.stdout + p.stderr
+    except subprocess.TimeoutExpired:
+        code, out = None, f"(timed out after {COMMAND_TIMEOUT} s)"
+    seconds = time.monotonic() - t0
+    if code == 0:
+        print(f"ok   {rel}:{start}  ({seconds:.1f} s)  python block (doctest)")
+        return True
+    print(f"FAIL {rel}:{start}: python block at line {start} ({seconds:.1f} s), doctest says"
+          " (its line numbers are the file's):")
+    for line in out.rstrip("\n").split("\n"):
+        print("    | " + line)
+    return False
 
 
 def examples(path):
@@ -131,10 +178,11 @@ def scratch_tree(source, build):
     return root
 
 
-def run_file(source, build, path):
+def run_file(source, build, path, python_dir):
     rel = os.path.relpath(path, source)
     found = examples(path)
-    if not found:
+    pyfound = python_blocks(path) if python_dir else []
+    if not found and not pyfound:
         return 0, 0
     root = scratch_tree(source, build)
     env = dict(os.environ, LC_ALL="C.UTF-8", COLUMNS="100")
@@ -188,25 +236,35 @@ def run_file(source, build, path):
                     for text in err.rstrip("\n").split("\n")[-20:]:
                         print("    ! " + text)
                 break  # the block's later commands may depend on this one
+        for start, text in pyfound:
+            if not run_python(rel, root, env, python_dir, build, start, text):
+                failures += 1
     finally:
         shutil.rmtree(root, ignore_errors=True)
-    return sum(len(s) for _, s in found), failures
+    return sum(len(s) for _, s in found) + len(pyfound), failures
 
 
 def main(argv):
+    python_dir = None
+    for a in [a for a in argv if a.startswith("--python=")]:
+        python_dir = os.path.abspath(a[len("--python="):])
+        argv = [b for b in argv if b != a]
     if len(argv) < 3:
         print(__doc__, file=sys.stderr)
         return 2
     check_matcher()
     source, build = os.path.abspath(argv[1]), os.path.abspath(argv[2])
+    if python_dir is None:
+        print("doc_examples: no --python: the `>>>` blocks are not run (module not built)")
     files = argv[3:] or [os.path.join(source, "README.md")] + sorted(
         os.path.join(source, "docs", f) for f in os.listdir(os.path.join(source, "docs"))
         if f.endswith(".md"))
     total = failed = 0
     for path in files:
-        n, bad = run_file(source, build, os.path.abspath(path))
+        n, bad = run_file(source, build, os.path.abspath(path), python_dir)
         total, failed = total + n, failed + bad
-    print(f"doc_examples: {total} command(s) in {len(files)} file(s), {failed} failed")
+    print(f"doc_examples: {total} command(s) and python block(s) in {len(files)} file(s),"
+          f" {failed} failed")
     if total == 0:
         print("doc_examples: no example found: the documentation lost its examples?")
         return 1
