@@ -124,16 +124,17 @@ def line_pattern(expected):
 
 def match(expected, actual):
     """None when `actual` lines match the `expected` (line, text) pairs, otherwise the
-    index of the furthest expected line that could not be matched."""
+    index of the furthest expected line that could not be matched (match.actual_line: the
+    actual line it was tried against, 0-based; len(actual) when the output ended)."""
     pats = [None if text.strip() == "..." else line_pattern(text) for _, text in expected]
-    furthest = [0]
+    furthest = [(0, 0)]
     memo = {}
 
     def go(i, j):
         key = (i, j)
         if key in memo:
             return memo[key]
-        furthest[0] = max(furthest[0], i)
+        furthest[0] = max(furthest[0], (i, j))
         if i == len(pats):
             ok = j == len(actual)
         elif pats[i] is None:
@@ -145,7 +146,10 @@ def match(expected, actual):
         return ok
 
     sys.setrecursionlimit(max(10000, 4 * (len(pats) + len(actual))))
-    return None if go(0, 0) else furthest[0]
+    if go(0, 0):
+        return None
+    match.actual_line = furthest[0][1]
+    return furthest[0][0]
 
 
 def check_matcher():
@@ -220,11 +224,15 @@ def run_file(source, build, path, python_dir):
                 if code != want_exit:
                     print(f"  exit code {code}, expected {want_exit}")
                 if bad is not None:
+                    j = match.actual_line
+                    got = (f"actual line {j + 1}: {actual[j]}" if j < len(actual)
+                           else "the actual output ended")
                     if bad < len(expected):
                         ln, text = expected[bad]
                         print(f"  first expected line not matched: {rel}:{ln}: {text}")
+                        print(f"  against {got}")
                     else:
-                        print("  the actual output has more lines than the example")
+                        print(f"  the actual output has more lines than the example: {got}")
                 print("  expected:")
                 for _, text in expected:
                     print("    | " + text)
