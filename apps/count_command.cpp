@@ -70,15 +70,14 @@ int run_count(const CountOptions& o) {
   const CountBounds& b = r.bounds;
   const int p = int(r.factor_text.size());
   std::string line;
+  auto aspects = [](int k) { return std::to_string(k) + (k == 1 ? " aspect" : " aspects"); };
   if (b.exact())
-    line = std::to_string(b.lower) + " aspects (certified: lower = upper)";
+    line = aspects(b.lower) + " (certified: lower = upper)";
   else if (b.upper >= 0)
-    line = "between " + std::to_string(b.lower) + " and " + std::to_string(b.upper) +
-           " aspects (certified)";
+    line = "between " + std::to_string(b.lower) + " and " + aspects(b.upper) + " (certified)";
   else
-    line = "at least " + std::to_string(b.lower) +
-           " aspects (certified); no upper bound: " + std::to_string(b.open_pieces) +
-           " piece(s) not proved connected";
+    line = "at least " + aspects(b.lower) + " (certified); no upper bound: " +
+           std::to_string(b.open_pieces) + " piece(s) not proved connected";
   if (o.json) {
     nlohmann::json j;
     j["robot"] = m.name;
@@ -90,7 +89,8 @@ int run_count(const CountOptions& o) {
     j["open_adjacencies"] = b.open_adjacencies;
     j["open_pieces_by_reason"] = {{"no_chart", r.open_by_reason[int(OpenReason::NoChart)]},
                                   {"no_point", r.open_by_reason[int(OpenReason::NoPoint)]},
-                                  {"not_star", r.open_by_reason[int(OpenReason::NotStar)]}};
+                                  {"not_star", r.open_by_reason[int(OpenReason::NotStar)]},
+                                  {"not_reached", r.open_by_reason[int(OpenReason::NotReached)]}};
     j["first_cover"] = {{"eps", o.eps}, {"boxes", r.first_cover_boxes},
                         {"separated_lower_bound", r.separation_bound}};
     j["boxes"] = r.cells;
@@ -120,9 +120,10 @@ int run_count(const CountOptions& o) {
       std::cout << "the gap is held by " << b.open_pieces << " piece(s) not proved connected ("
                 << r.open_by_reason[int(OpenReason::NoChart)] << " with no chart, "
                 << r.open_by_reason[int(OpenReason::NoPoint)] << " with no certified point, "
-                << r.open_by_reason[int(OpenReason::NotStar)] << " whose star test failed) and "
-                << b.open_adjacencies << " undecided adjacency(ies) between components; stopped: "
-                << count_stop_name(r.stop) << '\n';
+                << r.open_by_reason[int(OpenReason::NotStar)] << " whose star test failed, "
+                << r.open_by_reason[int(OpenReason::NotReached)] << " not decided before the stop) and "
+                << b.open_adjacencies << " undecided adjacency(ies) between components; "
+                << "the refinement ended: " << count_stop_name(r.stop) << '\n';
       for (const OpenPlace& pl : r.open)
         std::cout << "  class " << class_text(pl.cls, p) << ": " << open_reason_name(pl.reason)
                   << ", at " << box_text(pl, m) << '\n';

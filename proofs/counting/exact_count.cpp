@@ -22,10 +22,11 @@ namespace aspects {
 
 const char* open_reason_name(OpenReason r) {
   switch (r) {
-    case OpenReason::NoChart: return "no chart (neither the pose nor the command chart proved)";
+    case OpenReason::NoChart: return "no chart proved (pose, command or mixed)";
     case OpenReason::NoPoint: return "no certified point of the class found";
     case OpenReason::NotStar: return "star-shaped test failed";
     case OpenReason::Adjacency: return "adjacency neither joined nor refuted";
+    case OpenReason::NotReached: return "not decided before the stop";
   }
   return "?";
 }
@@ -35,7 +36,7 @@ const char* count_stop_name(CountStop s) {
     case CountStop::Exact: return "exact";
     case CountStop::MinWidth: return "least width reached";
     case CountStop::Rounds: return "round budget spent";
-    case CountStop::Stopped: return "stopped";
+    case CountStop::Stopped: return "stopped (time limit or signal)";
   }
   return "?";
 }
@@ -274,7 +275,7 @@ class Counter {
     const bool defined = fg_.values(ev_, c.box, values);
     for (uint32_t s = 0; s < (uint32_t(1) << fg_.factors()); ++s)
       if (!defined || !class_empty(values, s))
-        c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
+        c.pieces.push_back({s, PieceState::Undecided, OpenReason::NotReached});
   }
 
   // ----- pieces

@@ -37,6 +37,7 @@ enum class OpenReason : uint8_t {
   NoPoint,     // a chart holds, but no certified point of the class was found in the box
   NotStar,     // the star-shaped test failed about the point found
   Adjacency,   // an adjacency between two components of H, neither joined nor refuted
+  NotReached,  // the refinement stopped before deciding the box
 };
 const char* open_reason_name(OpenReason r);
 
@@ -63,7 +64,7 @@ struct CountResult {
   long first_cover_boxes = 0, cells = 0, pieces = 0, adjacencies = 0;
   long bisections = 0, star_boxes = 0;
   std::vector<OpenPlace> open;  // at most a few, the first found
-  long open_by_reason[4] = {0, 0, 0, 0};  // open pieces (and adjacencies) by OpenReason
+  long open_by_reason[5] = {0, 0, 0, 0, 0};  // open pieces (and adjacencies) by OpenReason
   std::vector<std::string> factor_text;
   double seconds = 0;
 };
