@@ -115,8 +115,14 @@ SegmentCheck check_segment(const LoadedResult& r, CsncLinks& links, const Unwrap
   if (s.boxes.empty() || s.crossings.size() + 1 != s.boxes.size() || from.pose.size() != d ||
       to.pose.size() != d || from.turns.size() != d || to.turns.size() != d)
     return SegmentCheck::Malformed;
+  // Whole turns only where the model is 2π-periodic: elsewhere a shifted box is no box.
+  for (size_t j = 0; j < d; ++j)
+    if (!r.model.vars[r.model.pose[j]].periodic && (from.turns[j] != 0 || to.turns[j] != 0))
+      return SegmentCheck::Malformed;
   for (const PlacedBox& b : s.boxes) {
     if (b.solution >= r.index.solutions.size() || b.shift.size() != d) return SegmentCheck::Malformed;
+    for (size_t j = 0; j < d; ++j)
+      if (!r.model.vars[r.model.pose[j]].periodic && b.shift[j] != 0) return SegmentCheck::Malformed;
     if (r.index.solutions[b.solution].csnc != links.csnc()) return SegmentCheck::NotInCsnc;
   }
   if (!in_placed_box(r, from, s.boxes.front()) || !in_placed_box(r, to, s.boxes.back()))

@@ -514,6 +514,15 @@ TEST(PathShortcut, AroundAHoleTheShortcutKeepsFewCornersAllCertified) {
   const std::vector<size_t> far = solution_boxes_at(r, to).inside;
   other.segments.front().boxes.back().solution = far.front();
   EXPECT_NE(check_path(r, links, other), PathCheck::Certified);
+  // Whole turns on x1, which is not periodic: the shifted boxes are no solution boxes.
+  Segment turned = p.segments.front();
+  for (PlacedBox& b : turned.boxes) b.shift[0] = 1;
+  for (Crossing& c : turned.crossings)
+    if (c.coordinate == 0) c.turns = 1;
+  const Waypoint& a = p.waypoints[0];
+  const Waypoint& b = p.waypoints[1];
+  EXPECT_EQ(check_segment(r, links, {a.pose, {1, 0}}, {b.pose, {1, 0}}, turned),
+            SegmentCheck::Malformed);
 }
 
 TEST(QueryPath, PathAcrossCsncsOfDifferentSignsIsRefused) {
