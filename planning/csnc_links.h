@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "link.h"
@@ -34,8 +35,10 @@ class CsncLinks {
   CsncLinks(const LoadedResult& r, ModelEvaluator& ev, int32_t csnc);
   int32_t csnc() const { return csnc_; }
   const std::vector<size_t>& boxes() const { return boxes_; }
-  // A filter: every pair that meets is listed (ends compared with a margin); P3 decides.
-  const std::vector<BoxNeighbor>& neighbors(size_t solution) const;
+  // A filter: every box that meets this one is listed (ends compared with a margin); P3
+  // decides. Found on first use, through a grid over the non-periodic variables, so only
+  // the boxes near the route are visited.
+  const std::vector<BoxNeighbor>& neighbors(size_t solution);
   // P3 between box a and box b + 2πk (k: shift_code over all variables), proved once;
   // nullptr when it could not be proved. The witness is in a's frame.
   const LinkProof* link(size_t a, size_t b, uint32_t shift_code);
@@ -47,12 +50,21 @@ class CsncLinks {
   size_t proofs_tried() const { return proofs_.size(); }
 
  private:
-  void find_neighbors();
+  void build_grid();
+  std::vector<int64_t> cells_of(const IndexSolutionBox& b, double margin) const;
+  std::vector<BoxNeighbor> find_neighbors(size_t solution) const;
   const LoadedResult& r_;
   ModelEvaluator& ev_;
   int32_t csnc_;
   std::vector<size_t> boxes_;
-  std::vector<std::vector<BoxNeighbor>> neighbors_;  // by solution index (empty outside)
+  std::vector<std::vector<BoxNeighbor>> neighbors_;  // by solution index, once found
+  std::vector<char> found_;
+  // The grid: up to 2 non-periodic variables, a cell `step` wide from `origin` on each;
+  // cell key → the CSNC's boxes that meet the cell. With no such variable, one cell.
+  std::vector<int> grid_vars_;
+  std::vector<double> origin_, step_;
+  std::vector<int64_t> extent_;  // cells along each grid variable
+  std::unordered_map<int64_t, std::vector<size_t>> grid_;
   std::map<std::tuple<size_t, size_t, uint32_t>, std::optional<LinkProof>> proofs_;
   HsWorkspace ws_;
 };

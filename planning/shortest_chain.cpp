@@ -49,7 +49,6 @@ bool shortest_chain(const LoadedResult& r, CsncLinks& links, const std::vector<d
   for (size_t i : to_boxes)
     if (r.index.solutions[i].csnc == links.csnc()) is_goal[i] = 1;
   std::vector<std::vector<EdgeState>> state(nsol);
-  for (size_t i : links.boxes()) state[i].assign(links.neighbors(i).size(), EdgeState::Unknown);
   constexpr double kInf = std::numeric_limits<double>::infinity();
   for (;;) {
     // A* from the start pose (edges to each box holding it) to the goal pose.
@@ -76,6 +75,7 @@ bool shortest_chain(const LoadedResult& r, CsncLinks& links, const std::vector<d
         if (total < best) best = total, reached = u;
       }
       const std::vector<BoxNeighbor>& nbs = links.neighbors(u);
+      if (state[u].size() != nbs.size()) state[u].assign(nbs.size(), EdgeState::Unknown);
       for (size_t e = 0; e < nbs.size(); ++e) {
         if (state[u][e] == EdgeState::Failed) continue;
         const size_t v = nbs[e].other;
