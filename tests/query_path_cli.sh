@@ -47,6 +47,18 @@ expect 0 "certified singularity-free path in CSNC [0-9]+" \
 [ -s "$tmp/path.png" ] || fail "no PNG written"
 head -c 4 "$tmp/path.png" | grep -q PNG || fail "not a PNG"
 ls "$tmp" | grep -q tmp && fail "temporary file left: $(ls "$tmp")"
+# Around a hole of the RRRRR fixture (issue 51): 5 waypoints (start, 3 corners, goal), so
+# the CSV has a header and 5 rows and the JSON 5 waypoints.
+expect 0 "^certified singularity-free path in CSNC 1: 5 waypoints, length 6\\.66142, straight line 6\\.3 \\(ratio 1\\.057\\), CSNCs crossed: 1$" \
+  "$aspects" path "$result" --from 3.6,-2.6 --to 3.6,3.7 --out "$tmp/hole.csv"
+[ "$(wc -l < "$tmp/hole.csv")" -eq 6 ] || { cat "$tmp/hole.csv" >&2; fail "hole CSV rows"; }
+head -n 1 "$tmp/hole.csv" | grep -q "^kind,x1,x2,q1_lo,q1_hi,q2_lo,q2_hi,box$" || fail "hole CSV header"
+[ "$(cut -d, -f1 "$tmp/hole.csv" | tr '\n' ' ')" = "kind start corner corner corner goal " ] ||
+  fail "hole CSV kinds: $(cut -d, -f1 "$tmp/hole.csv" | tr '\n' ' ')"
+"$aspects" path "$result" --from 3.6,-2.6 --to 3.6,3.7 --out "$tmp/hole.json" > /dev/null 2>&1 ||
+  fail "path --out hole.json"
+[ "$(grep -o '"kind":' "$tmp/hole.json" | wc -l)" -eq 5 ] || fail "hole JSON waypoints"
+rm "$tmp/hole.csv" "$tmp/hole.json"
 # Seam: -9.42 is 3.1464 modulo 2π; from 2.9 to -2.9 the short way is across ±π (length
 # 2π - 5.8), through one link whose witness is ±π.
 "$aspects" solve "$seam_model" --eps 0.1 --no-cert --quiet --out "$tmp/seam"
