@@ -2,8 +2,6 @@
 
 #include <sys/stat.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -96,6 +94,7 @@ void check_out(const std::string& out) {
 }  // namespace
 
 int run_path(const PathOptions& opts) {
+  check_out(opts.out);
   LoadedResult r = load_result(opts.result_dir);
   if (const std::string note = certificate_note(r); !note.empty())
     std::cerr << "aspects: note: " << note << '\n';
@@ -105,7 +104,6 @@ int run_path(const PathOptions& opts) {
     throw UsageError("--csnc must be between 0 and " + std::to_string(r.index.csnc_count - 1) +
                      " (the result has " + std::to_string(r.index.csnc_count) + " CSNCs), got " +
                      std::to_string(opts.csnc));
-  check_out(opts.out);
   ModelEvaluator ev(r.model);
   PathResult p = plan_path(r, ev, from, to, opts.csnc);
   const nlohmann::json j = path_json(from, to, p);
