@@ -26,9 +26,12 @@ bool shortcut_path(const LoadedResult& r, ModelEvaluator& ev, CsncLinks& links, 
   std::vector<size_t> kept{0};
   std::vector<Segment> segments;
   PlacedBox box = p.segments.front().boxes.front();
+  // Farthest first costs up to W² walks; past this budget only the next waypoint is tried.
+  size_t budget = 64 * w.size();
   for (size_t i = 0; i < last;) {
     bool found = false;
-    for (size_t j = last; j > i && !found; --j) {
+    for (size_t j = budget > 0 ? last : i + 1; j > i && !found; --j) {
+      if (budget > 0) --budget;
       Segment s;
       if (!find_segment(r, links, at(w[i]), at(w[j]), box, s)) continue;
       if (check_segment(r, links, at(w[i]), at(w[j]), s) != SegmentCheck::Certified) continue;
