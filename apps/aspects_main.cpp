@@ -150,6 +150,7 @@ void add_path(CLI::App& app, Commands& c) {
                                           "CSNC), got " + v;
       });
   path->add_flag("--json", po.json, "print one JSON object");
+  path->add_option("--out", po.out, "write the waypoints to FILE.csv or FILE.json (temporary name, then renamed)");
   path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
 }
 

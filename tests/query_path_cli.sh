@@ -47,25 +47,45 @@ expect 0 "certified singularity-free path in CSNC [0-9]+" \
 [ -s "$tmp/path.png" ] || fail "no PNG written"
 head -c 4 "$tmp/path.png" | grep -q PNG || fail "not a PNG"
 ls "$tmp" | grep -q tmp && fail "temporary file left: $(ls "$tmp")"
+# Around a hole of the RRRRR fixture (issue 51): 5 waypoints (start, 3 corners, goal), so
+# the CSV has a header and 5 rows and the JSON 5 waypoints.
+expect 0 "^certified singularity-free path in CSNC 1: 5 waypoints, length 6\\.66142, straight line 6\\.3 \\(ratio 1\\.057\\), CSNCs crossed: 1$" \
+  "$aspects" path "$result" --from 3.6,-2.6 --to 3.6,3.7 --out "$tmp/hole.csv"
+[ "$(wc -l < "$tmp/hole.csv")" -eq 6 ] || { cat "$tmp/hole.csv" >&2; fail "hole CSV rows"; }
+head -n 1 "$tmp/hole.csv" | grep -q "^kind,x1,x2,q1_lo,q1_hi,q2_lo,q2_hi,box$" || fail "hole CSV header"
+[ "$(cut -d, -f1 "$tmp/hole.csv" | tr '\n' ' ')" = "kind start corner corner corner goal " ] ||
+  fail "hole CSV kinds: $(cut -d, -f1 "$tmp/hole.csv" | tr '\n' ' ')"
+"$aspects" path "$result" --from 3.6,-2.6 --to 3.6,3.7 --out "$tmp/hole.json" > /dev/null 2>&1 ||
+  fail "path --out hole.json"
+[ "$(grep -o '"kind":' "$tmp/hole.json" | wc -l)" -eq 5 ] || fail "hole JSON waypoints"
+rm "$tmp/hole.csv" "$tmp/hole.json"
 # Seam: -9.42 is 3.1464 modulo 2π; from 2.9 to -2.9 the short way is across ±π (length
 # 2π - 5.8), through one link whose witness is ±π.
 "$aspects" solve "$seam_model" --eps 0.1 --no-cert --quiet --out "$tmp/seam"
 expect 0 "^CSNC 0  signs -,\\+$" "$aspects" query "$tmp/seam" --pose=-9.42
-expect 0 "certified singularity-free path in CSNC 0: 3 waypoints, length 0\\.483185$" \
+# Shortcut (issue 51): one straight segment across the seam, through the two end boxes
+# linked there; the chain of links had 3 waypoints (the witness at ±π).
+expect 0 "certified singularity-free path in CSNC 0: 2 waypoints, length 0\\.483185, straight line 0\\.483185 \\(ratio 1\\.000\\), CSNCs crossed: 1$" \
   "$aspects" path "$tmp/seam" --from 2.9 --to=-2.9
-grep -E -q "^  witness \\(-?3\\.141592654\\)  box [0-9]+: q in \\[0\\.99999" "$tmp/out" ||
-  { cat "$tmp/out" >&2; fail "no witness at the seam"; }
+"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 --json | grep -q '"chain_waypoints":3,' ||
+  fail "the chain before the shortcut is not of 3 waypoints"
 expect 1 "refused: .*different determinant signs" "$aspects" path "$tmp/seam" --from 2.5 --to=-2.9
 
-# The seam path as printed: unwrapped, the goal is -2.9 + 2π, every printed pose is above
-# the one before, and the length is the distance between the printed ends.
-"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 > "$tmp/out"
-grep -q "^  goal    (3\.383185307)  box" "$tmp/out" || { cat "$tmp/out" >&2; fail "goal not unwrapped"; }
-grep -q "^the goal is printed unwrapped" "$tmp/out" || fail "no note that the goal is unwrapped"
-awk -F'[()]' '/^  (start|witness|goal)/ { if (n++ && $2 + 0 <= last) bad = 1; last = $2 }
-  END { exit bad || n != 3 }' "$tmp/out" || { cat "$tmp/out" >&2; fail "printed poses not increasing"; }
-"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 --json | grep -q '"turns":\[1\]' ||
-  fail "the goal's turns are not [1] in --json"
+# The seam path as written by --out: unwrapped, the goal is -2.9 + 2π, every pose is above
+# the one before. CSV: a header and one row per waypoint; JSON: what --json prints.
+"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 --out "$tmp/seam.csv" > /dev/null 2>&1 ||
+  fail "path --out seam.csv"
+[ "$(wc -l < "$tmp/seam.csv")" -eq 3 ] || { cat "$tmp/seam.csv" >&2; fail "CSV rows"; }
+head -n 1 "$tmp/seam.csv" | grep -q "^kind,t,q_lo,q_hi,box$" || fail "CSV header"
+grep -q "^goal,3\.38318530717958" "$tmp/seam.csv" || { cat "$tmp/seam.csv" >&2; fail "goal not unwrapped"; }
+awk -F, 'NR > 1 { if (n++ && $2 + 0 <= last) bad = 1; last = $2 } END { exit bad || n != 2 }' \
+  "$tmp/seam.csv" || { cat "$tmp/seam.csv" >&2; fail "poses not increasing"; }
+"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 --out "$tmp/seam.json" > /dev/null 2>&1 ||
+  fail "path --out seam.json"
+"$aspects" path "$tmp/seam" --from 2.9 --to=-2.9 --json > "$tmp/seam_stdout.json"
+cmp -s "$tmp/seam.json" "$tmp/seam_stdout.json" || fail "--out FILE.json differs from --json"
+grep -q '"turns":\[1\]' "$tmp/seam.json" || fail "the goal's turns are not [1] in --out JSON"
+ls "$tmp" | grep -q 'seam\.csv\.\|seam\.json\.' && fail "temporary file left: $(ls "$tmp")"
 
 # 4.71238898038469 is -π/2 + 2π to an ulp, on a face of the helix's subdivision after the
 # shift; at 24 bits a test sure only of "inside" misses a window about 5e-7 wide.

@@ -20,7 +20,8 @@
 
 #include "generalized_aspects.h"
 #include "loaded_result.h"
-#include "path_command.h"
+#include "csnc_links.h"
+#include "path_plan.h"
 #include "pose.h"
 #include "query_command.h"
 #include "result_index.h"
@@ -338,7 +339,7 @@ TEST(QueryPath, PathAcrossTheSeamIsPrintedUnwrapped) {
       "robot Seam\npose    t in [-pi, pi] periodic\ncommand q in [0, 4]\n"
       "equation q - 2 - cos(t) + sin(t)/2 = 0\n", 0.1, 53);
   ModelEvaluator ev(r.model);
-  PathResult p = plan_path(r, ev, {2.9}, {-2.9}, -1);
+  PathResult p = plan_path(r, ev, {2.9}, {-2.9}, -1, PathShape::Chain);
   ASSERT_EQ(p.outcome, PathOutcome::Found) << p.failure;
   ASSERT_EQ(p.waypoints.size(), 3u);
   EXPECT_EQ(p.waypoints.front().turns, std::vector<long>{0});
@@ -406,7 +407,7 @@ TEST(QueryPath, PathAcrossTheLargestCsncIsCertifiedSegmentBySegment) {
   }
   ASSERT_TRUE(left && right);
   std::vector<double> from = centre(*left), to = centre(*right);
-  PathResult p = plan_path(r, ev, from, to, 0);
+  PathResult p = plan_path(r, ev, from, to, 0, PathShape::Chain);
   ASSERT_EQ(p.outcome, PathOutcome::Found) << p.failure;
   EXPECT_EQ(p.csnc, 0);
   ASSERT_GE(p.waypoints.size(), 4u);
@@ -445,6 +446,83 @@ TEST(QueryPath, PathAcrossTheLargestCsncIsCertifiedSegmentBySegment) {
       }
     }
   }
+}
+
+// Issue 51: the path is short by default, and every segment of it is certified.
+void expect_certified(const LoadedResult& r, ModelEvaluator& ev, const PathResult& p) {
+  CsncLinks links(r, ev, p.csnc);
+  size_t bad = 0;
+  SegmentCheck why = SegmentCheck::Certified;
+  EXPECT_EQ(check_path(r, links, p, &bad, &why), PathCheck::Certified)
+      << "segment " << bad << ": " << segment_check_name(why);
+  ASSERT_EQ(p.segments.size() + 1, p.waypoints.size());
+  for (size_t i = 0; i < p.segments.size(); ++i) {
+    const Waypoint& a = p.waypoints[i];
+    const Waypoint& b = p.waypoints[i + 1];
+    EXPECT_EQ(check_segment(r, links, {a.pose, a.turns}, {b.pose, b.turns}, p.segments[i]),
+              SegmentCheck::Certified) << "segment " << i;
+  }
+}
+
+TEST(PathShortcut, ReadmeExampleIsOneStraightSegment) {
+  // README: from (10, -6) to (4, -9) on the default RRRRR (here the fixture, eps 0.3,
+  // without --all-links). The chain of links proved on demand has 11 waypoints; the
+  // shortcut keeps 2: the straight segment, through a chain of linked boxes.
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  PathResult chain = plan_path(r, ev, {10, -6}, {4, -9}, -1, PathShape::Chain);
+  ASSERT_EQ(chain.outcome, PathOutcome::Found) << chain.failure;
+  EXPECT_EQ(chain.waypoints.size(), 11u);
+  expect_certified(r, ev, chain);
+  PathResult p = plan_path(r, ev, {10, -6}, {4, -9}, -1);
+  ASSERT_EQ(p.outcome, PathOutcome::Found) << p.failure;
+  EXPECT_EQ(p.csnc, 0);
+  EXPECT_EQ(p.waypoints.size(), 2u);
+  EXPECT_EQ(p.chain_waypoints, 11u);
+  EXPECT_DOUBLE_EQ(p.straight, std::hypot(6.0, 3.0));
+  EXPECT_LT(p.length / p.straight, 1 + 1e-12);
+  EXPECT_GT(p.segments.front().boxes.size(), 5u);  // a chain of boxes, not one box
+  expect_certified(r, ev, p);
+}
+
+TEST(PathShortcut, AroundAHoleTheShortcutKeepsFewCornersAllCertified) {
+  // From (3.6, -2.6) to (3.6, 3.7) in CSNC 1 the straight line leaves the CSNC: before
+  // issue 51 (the solve's links only) 35 waypoints, length 7.41563; the chain of links
+  // proved on demand has 30, the shortcut 5 (3 corners), length 6.6614 for 6.3 straight.
+  LoadedResult& r = rrrrr();
+  ModelEvaluator ev(r.model);
+  const std::vector<double> from{3.6, -2.6}, to{3.6, 3.7};
+  PathResult chain = plan_path(r, ev, from, to, -1, PathShape::Chain);
+  PathResult p = plan_path(r, ev, from, to, -1);
+  ASSERT_EQ(p.outcome, PathOutcome::Found) << p.failure;
+  EXPECT_EQ(p.csnc, 1);
+  EXPECT_EQ(chain.waypoints.size(), 30u);
+  expect_certified(r, ev, chain);
+  EXPECT_EQ(p.waypoints.size(), 5u);
+  EXPECT_EQ(p.waypoints[2].kind, WaypointKind::Corner);
+  EXPECT_NEAR(p.length, 6.66141677321745, 1e-9);
+  EXPECT_LT(p.length / p.straight, 1.058);
+  EXPECT_GT(chain.length / chain.straight, 1.1);
+  EXPECT_LT(p.length, chain.length);
+  expect_certified(r, ev, p);
+  // The check is no formality: a segment moved off its boxes, or boxes not linked, fail.
+  PathResult moved = p;
+  moved.waypoints[1].pose[1] += 3;
+  CsncLinks links(r, ev, p.csnc);
+  EXPECT_NE(check_path(r, links, moved), PathCheck::Certified);
+  PathResult other = p;
+  const std::vector<size_t> far = solution_boxes_at(r, to).inside;
+  other.segments.front().boxes.back().solution = far.front();
+  EXPECT_NE(check_path(r, links, other), PathCheck::Certified);
+  // Whole turns on x1, which is not periodic: the shifted boxes are no solution boxes.
+  Segment turned = p.segments.front();
+  for (PlacedBox& b : turned.boxes) b.shift[0] = 1;
+  for (Crossing& c : turned.crossings)
+    if (c.coordinate == 0) c.turns = 1;
+  const Waypoint& a = p.waypoints[0];
+  const Waypoint& b = p.waypoints[1];
+  EXPECT_EQ(check_segment(r, links, {a.pose, {1, 0}}, {b.pose, {1, 0}}, turned),
+            SegmentCheck::Malformed);
 }
 
 TEST(QueryPath, PathAcrossCsncsOfDifferentSignsIsRefused) {

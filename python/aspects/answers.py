@@ -125,8 +125,8 @@ class QueryBatch:
 
 @dataclass(frozen=True)
 class Waypoint(_FromJson):
-    """A point of a path: its `kind` (start, witness, goal, ...), `pose`, the solution `box`
-    of the segment that follows, the command's enclosure there, and the whole turns
+    """A point of a path: its `kind` (start, corner, witness, goal), `pose`, the first solution
+    `box` of the segment that follows (docs/path.md), the command's enclosure there, and the whole turns
     (`turns`, pose order) that unwrap a periodic pose variable along the path."""
     kind: str
     pose: Tuple[float, ...]

@@ -1,6 +1,6 @@
 // aspects.Result (the compiled part; python/aspects/result.py adds the rest): the boxes as
 // numpy arrays, the summary, and `query` and `path` as `aspects query|path --json` answer
-// them, through the same code (apps/query_command.h, apps/path_command.h).
+// them, through the same code (apps/query_command.h, planning/path_plan.h).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -11,7 +11,7 @@
 #include <optional>
 
 #include "model/model_eval.h"
-#include "path_command.h"
+#include "path_plan.h"
 #include "pose.h"
 #include "py_common.h"
 #include "query_command.h"

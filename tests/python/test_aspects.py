@@ -559,7 +559,11 @@ def test_query_and_path_are_classes_with_their_dict(rprpr):
     assert p.start == (3.0, 5.0) and p.goal == (4.0, 2.5)
     assert p.waypoints[0].kind == "start" and p.waypoints[-1].pose == (4.0, 2.5)
     assert p.poses.shape == (len(p.waypoints), 2)
-    assert p.length == p.to_dict()["length"] > math.dist((3, 5), (4, 2.5))
+    # Issue 51: the straight segment, certified through a chain of linked boxes (the chain
+    # of links before the shortcut was longer).
+    assert len(p.waypoints) == 2 and p.waypoints[0].kind == "start"
+    assert p.length == p.to_dict()["length"] == p.to_dict()["straight"] == math.dist((3, 5), (4, 2.5))
+    assert p.to_dict()["chain_length"] > p.length
     none = r.path([3, 5], [19, 19])
     assert not none.found and none.outcome == "goal_in_no_solution_box"
     assert none.csnc is None and none.length is None and none.poses.shape == (0, 2)
