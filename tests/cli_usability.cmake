@@ -8,7 +8,7 @@ aspects_cli_test(unknown_subcommand_meant 2 "^aspects: unknown subcommand 'solv'
 aspects_cli_test(unknown_subcommand_swapped 2 "^aspects: unknown subcommand 'plto'; did you mean `plot`\\?$" --
                  ${_aspects} plto out)
 aspects_cli_test(unknown_subcommand_listed 2
-                 "^aspects: unknown subcommand 'm\\.robot' \\(the subcommands: info, solve, query, path, plot, count, verify\\)$" --
+                 "^aspects: unknown subcommand 'm\\.robot' \\(the subcommands: info, solve, query, path, plot, view, export, count, verify\\)$" --
                  ${_aspects} m.robot)
 # Short options, real defaults and plot's formats in --help, option errors pointing to the
 # subcommand's --help.

@@ -15,7 +15,7 @@ for page in aspects.1 check_cert.1; do
 done
 grep -q '^\.TH ASPECTS "1"' "$man/aspects.1" || fail "aspects.1 has no .TH ASPECTS 1 header"
 subs=$("$aspects" --help | sed -n '/^Subcommands:/,$p' | sed -n 's/^  \([a-z][a-z_-]*\)  .*/\1/p')
-[ "$(echo $subs)" = "info solve query path plot count verify" ] ||
+[ "$(echo $subs)" = "info solve query path plot view export count verify" ] ||
   fail "aspects --help lists the subcommands '$(echo $subs)'"
 for sub in $subs; do
   grep -q "^\.SS \"aspects $sub\"\$" "$man/aspects.1" || fail "aspects.1 has no section for $sub"

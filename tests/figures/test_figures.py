@@ -256,7 +256,7 @@ def test_plot_three_axes_is_3d(rpr3):
 def test_cli_plot_bad_options_name_the_option(rprpr, tmp_path, args, message):
     if "PATH" in args:
         r = aspects.load(rprpr)
-        (tmp_path / "p.json").write_text(json.dumps(r.path([3, 5], [4, 2.5])))
+        (tmp_path / "p.json").write_text(json.dumps(r.path([3, 5], [4, 2.5]).to_dict()))
         args = [str(tmp_path / "p.json") if a == "PATH" else a for a in args]
     run = cli("plot", rprpr, "--out", str(tmp_path / "x.png"), *args, check=False)
     assert (run.returncode, run.stderr) == (2, f"aspects: {message}\n")
