@@ -32,10 +32,13 @@ std::string box_text(const OpenPlace& o, const Model& m) {
   return out.str();
 }
 
-void progress_line(int round, const CountBounds& b, long cells, void*) {
-  std::fprintf(stderr, "count: round %d, %ld boxes, lower %d, upper %s (%ld pieces, %ld adjacencies open)\n",
+void progress_line(int round, const CountBounds& b, long cells, const long* why, void*) {
+  std::fprintf(stderr,
+               "count: round %d, %ld boxes, lower %d, upper %s (%ld pieces open: %ld no chart, "
+               "%ld no point, %ld star failed; %ld adjacencies open)\n",
                round + 1, cells, b.lower, b.upper < 0 ? "none" : std::to_string(b.upper).c_str(),
-               b.open_pieces, b.open_adjacencies);
+               b.open_pieces, why[int(OpenReason::NoChart)], why[int(OpenReason::NoPoint)],
+               why[int(OpenReason::NotStar)], b.open_adjacencies);
 }
 
 }  // namespace

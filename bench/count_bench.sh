@@ -20,7 +20,7 @@ rows = {}
 for line in open(sys.argv[1]):
     robot, secs, path = line.split()
     rows.setdefault(robot, []).append((float(secs), json.load(open(path))))
-print("| robot | result | median wall (s) | runs | first cover boxes | boxes at the end | bisections | open pieces (no chart / no point / star failed) |")
+print("| robot | result | median wall (s) | runs | first cover boxes | boxes at the end | bisections | open pieces (no chart / no point / star failed / not reached) |")
 print("|---|---|---|---|---|---|---|---|")
 for robot, runs in rows.items():
     j = runs[-1][1]
@@ -28,7 +28,8 @@ for robot, runs in rows.items():
     res = "%d exactly" % j["lower_bound"] if j["exact"] else "%d..%s (%s)" % (
         j["lower_bound"], "?" if up is None else up, j["stop"])
     r = j["open_pieces_by_reason"]
-    print("| %s | %s | %.2f | %d | %d | %d | %d | %d / %d / %d |" % (
+    print("| %s | %s | %.2f | %d | %d | %d | %d | %d / %d / %d / %s |" % (
         robot, res, statistics.median(s for s, _ in runs), len(runs), j["first_cover"]["boxes"],
-        j["boxes"], j["bisections"], r["no_chart"], r["no_point"], r["not_star"]))
+        j["boxes"], j["bisections"], r["no_chart"], r["no_point"], r["not_star"],
+        r.get("not_reached", "-")))
 PY

@@ -167,7 +167,7 @@ class Counter {
       rebuild_adjacencies();
       std::vector<int32_t> refine;
       CountBounds b = decide_adjacencies_and_bound(refine, out);
-      if (config_.progress) config_.progress(round, b, alive_cells(), config_.progress_data);
+      if (config_.progress) config_.progress(round, b, alive_cells(), out.open_by_reason, config_.progress_data);
       if (b.exact()) {
         out.stop = CountStop::Exact;
         break;

@@ -26,8 +26,9 @@ struct CountConfig {
   int max_rounds = 200;
   int threads = 1;           // the first cover's search
   StopCondition* stop = nullptr;
-  // Told after each round (stderr progress).
-  void (*progress)(int round, const CountBounds&, long cells, void* data) = nullptr;
+  // Told after each round (stderr progress), with the open pieces by OpenReason.
+  void (*progress)(int round, const CountBounds&, long cells, const long* open_by_reason,
+                   void* data) = nullptr;
   void* progress_data = nullptr;
 };
 
