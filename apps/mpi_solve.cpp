@@ -106,7 +106,7 @@ PreparedRun prepare_run(SolveOptions& o, MpiJob& job) {
   if (run.failure) return run;
   try {
     complete_options(o);
-    set_arithmetic(o);
+    set_precision(o);
     run.model = shared_model ? parse_model(shared_model->text, shared_model->name)
                              : solve_model(o, run.resumed.get());
     if (!resuming) choose_bisect(o, *run.model);  // a resumed run has its checkpoint's

@@ -214,7 +214,7 @@ void search_subtrees_for_rank0(MpiJob& job, Model& model, const AspectsConfig& g
   const std::vector<Factor> factors = determinant_factors(model);
   const int nv = int(model.vars.size()), threads = std::max(1, config.threads);
   const long prec = working_precision();
-  Parallel parallel(threads);
+  Parallel parallel(threads, prec);
   parallel.arena().execute([&] {
     tbb::parallel_for(0, threads, [&](int thread) {
       set_working_precision(prec);  // MPFR's default precision is per thread

@@ -49,7 +49,7 @@ int run_solve(const SolveOptions& opts, SharedSearch* shared) {
   if (!shared && !resumed && !o.was_given("--checkpoint") && !o.out_dir.empty())
     o.checkpoint = kDefaultCheckpointSeconds;
   complete_options(o);
-  set_arithmetic(o);
+  set_precision(o);
   Model model = shared ? std::move(*shared->model) : solve_model(o, resumed.get());
   if (!resumed) choose_bisect(o, model);
 

@@ -24,7 +24,7 @@ struct SolveOptions {
   int cert_format = 2;  // 3: the compact format (certificates/compact_records.h)
   bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
   bool quiet = false;
-  bool mpfi_only = false;  // no double fast path at 53 bits (core/numerics/interval.h)
+  bool mpfi_only = false;  // no double fast path at 53 bits (core/numerics/arithmetic.h)
   std::string bisect = "round-robin";
   // Limits of a long run; negative: none. A stopped run writes a partial
   // result and exits with kExitStopped.

@@ -90,10 +90,7 @@ void complete_options(SolveOptions& o) {
   if (o.threads == 0) o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-void set_arithmetic(const SolveOptions& o) {
-  set_working_precision(o.prec);
-  set_double_fast_path(!o.mpfi_only);
-}
+void set_precision(const SolveOptions& o) { set_working_precision(o.prec); }
 
 Model solve_model(const SolveOptions& o, const Checkpoint* resumed) {
   if (resumed) return resumed_model(o, resumed->header);
@@ -113,6 +110,7 @@ AspectsConfig engine_config(const SolveOptions& o) {
   cfg.all_links = o.all_links;
   cfg.grid_records = o.cert_format == 3;
   cfg.threads = o.threads;
+  cfg.arithmetic = o.mpfi_only ? Arithmetic::MpfiOnly : Arithmetic::DoublesFirst;
   parse_bisector_kind(o.bisect, cfg.bisector);  // CLI11 already checked the name
   return cfg;
 }

@@ -19,8 +19,9 @@ void validate_solve_options(const SolveOptions& o);
 // for --checkpoint without --out.
 void complete_options(SolveOptions& o);
 
-// The working precision and the double fast path of every thread started afterwards.
-void set_arithmetic(const SolveOptions& o);
+// This thread's working precision (each thread of the run sets its own: MPFR keeps it per
+// thread). The rest of the arithmetic is the engine's configuration (engine_config).
+void set_precision(const SolveOptions& o);
 
 // The model to solve: the resumed run's, MODEL, or the embedded RRRRR.
 Model solve_model(const SolveOptions& o, const Checkpoint* resumed);

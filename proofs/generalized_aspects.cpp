@@ -46,14 +46,15 @@ AspectsResult compute_aspects(Model& model, const AspectsConfig& config) {
       out.run_stopped_in = phase;
     if (config.phase_done) config.phase_done(phase, seconds);
   });
-  Parallel parallel(config.threads);
+  Parallel parallel(config.threads, working_precision());
   out.factors = determinant_factors(model);  // adds nodes: before any evaluator exists
   SearchOutcome searched = search_phase(model, config, out.factors, parallel, clock);
   out.boxes = std::move(searched.boxes);
   out.tree = std::move(searched.tree);
   // The later phases' results do not depend on the threads either (parallel.h).
   std::unique_ptr<Parallel> more;
-  if (config.later_threads > config.threads) more = std::make_unique<Parallel>(config.later_threads);
+  if (config.later_threads > config.threads)
+    more = std::make_unique<Parallel>(config.later_threads, parallel.precision());
   Parallel& later = more ? *more : parallel;
   out.diagnostics = searched.diagnostics;
   count_leaves(out);

@@ -142,7 +142,7 @@ HsStatus sweep(ModelEvaluator& ev, const Box& box, bool intersect, std::vector<I
 HsStatus hansen_sengupta(ModelEvaluator& ev, const Box& box, bool intersect,
                          std::vector<Interval>& image, HsWorkspace& ws, bool in_pose,
                          const std::vector<int>* unknowns) {
-  ws.in_doubles = double_fast_path() && working_precision() == 53;
+  ws.in_doubles = ev.arithmetic() == Arithmetic::DoublesFirst;
   if (ws.in_doubles) return sweep(ev, box, intersect, image, ws, ws.doubles, in_pose, unknowns);
   return sweep(ev, box, intersect, image, ws, ws.mpfi, in_pose, unknowns);
 }

@@ -71,6 +71,9 @@ set_tests_properties(paper_repro.only_prrp PROPERTIES TIMEOUT 120 LABELS cli)
 aspects_engine_test(test_held_records core 300)
 target_link_libraries(test_held_records PRIVATE aspects_cert_writer)
 
+# Two solves at once in one process, one MPFI only: each computes as it asked.
+aspects_engine_test(test_two_solves core 300)
+
 # Runs stopped after their search, each partial certificate checked by check_cert.
 if(TARGET check_cert)
   aspects_engine_test(test_phase_stops core 300)

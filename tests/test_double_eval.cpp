@@ -168,12 +168,9 @@ bool same_boxes(const Box& x, const Box& y) {
   return true;
 }
 
-// An evaluator without the double fast path (the switch is read when it is created).
+// An evaluator without the double fast path.
 std::unique_ptr<aspects::Evaluator> mpfi_evaluator(const aspects::Dag& dag) {
-  aspects::set_double_fast_path(false);
-  auto ev = std::make_unique<aspects::Evaluator>(dag);
-  aspects::set_double_fast_path(true);
-  return ev;
+  return std::make_unique<aspects::Evaluator>(dag, aspects::Arithmetic::MpfiOnly);
 }
 
 class BothInstantiations : public ::testing::TestWithParam<std::string> {};

@@ -278,15 +278,8 @@ TEST_F(HansenSengupta, DoublesGiveMpfisSweepOnTheRobots) {
     std::stringstream text;
     text << in.rdbuf();
     Model m = parse_model(text.str(), ref.path());
-    ModelEvaluator ev(m);
+    ModelEvaluator ev(m), em(m, Arithmetic::MpfiOnly);
     HsWorkspace wd, wm;
-    // wm's calls run with the double fast path off (core/numerics/interval.h), restored after each.
-    auto mpfi_only = [](auto call) {
-      set_double_fast_path(false);
-      auto result = call();
-      set_double_fast_path(true);
-      return result;
-    };
     for (int trial = 0; trial < 100; ++trial) {
       const aspects_test::Point p = ref.solution(g);
       Box box(p.size());
@@ -297,7 +290,7 @@ TEST_F(HansenSengupta, DoublesGiveMpfisSweepOnTheRobots) {
       std::vector<Interval> yd, ym;
       for (bool intersect : {false, true}) {
         HsStatus sd = hansen_sengupta(ev, box, intersect, yd, wd);
-        HsStatus sm = mpfi_only([&] { return hansen_sengupta(ev, box, intersect, ym, wm); });
+        HsStatus sm = hansen_sengupta(em, box, intersect, ym, wm);
         ASSERT_TRUE(wd.in_doubles);
         ASSERT_FALSE(wm.in_doubles);
         ASSERT_EQ(sd, sm) << ref.file << " trial " << trial;
@@ -311,7 +304,7 @@ TEST_F(HansenSengupta, DoublesGiveMpfisSweepOnTheRobots) {
       }
       ExistenceProof pd, pm;
       Existence ed = prove_existence(ev, box, 1.01, 8, pd, wd);
-      ASSERT_EQ(ed, mpfi_only([&] { return prove_existence(ev, box, 1.01, 8, pm, wm); }))
+      ASSERT_EQ(ed, prove_existence(em, box, 1.01, 8, pm, wm))
           << ref.file << " trial " << trial;
       if (ed == Existence::Proved) {
         ++proved;

@@ -2,8 +2,8 @@
 
 namespace aspects {
 
-Evaluator::Evaluator(const Dag& dag)
-    : doubles_(double_fast_path() && working_precision() == 53
+Evaluator::Evaluator(const Dag& dag, Arithmetic arithmetic)
+    : doubles_(arithmetic == Arithmetic::DoublesFirst && working_precision() == 53
                    ? new IntervalEvaluator<DInterval>(dag)
                    : nullptr),
       mpfi_(dag),

@@ -5,7 +5,7 @@
 // defined).
 //
 // Both run on the evaluator of core/model/interval_eval.h: on doubles first at a working
-// precision of 53 bits (unless set_double_fast_path(false) when created), where the ends
+// precision of 53 bits (unless made with Arithmetic::MpfiOnly), where the ends
 // are MPFI's and MPFR's arithmetic is avoided; on MPFI whenever doubles decline, from the
 // start of the program, and at every other precision.
 #pragma once
@@ -16,6 +16,7 @@
 #include "model/eval_status.h"
 #include "model/expr.h"
 #include "model/interval_eval.h"
+#include "numerics/arithmetic.h"
 #include "numerics/double_interval.h"
 #include "numerics/interval.h"
 
@@ -23,7 +24,13 @@ namespace aspects {
 
 class Evaluator {
  public:
-  explicit Evaluator(const Dag& dag);
+  // The precision is this thread's working precision when it is made.
+  explicit Evaluator(const Dag& dag, Arithmetic arithmetic = Arithmetic::DoublesFirst);
+
+  // How it computes: DoublesFirst only when asked to and made at 53 bits.
+  Arithmetic arithmetic() const {
+    return doubles_ ? Arithmetic::DoublesFirst : Arithmetic::MpfiOnly;
+  }
 
   // Evaluates the nodes of `program` (a Dag::closure, increasing ids) on the box.
   EvalStatus forward(const std::vector<int>& program, const Box& box);

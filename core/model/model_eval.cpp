@@ -2,8 +2,8 @@
 
 namespace aspects {
 
-ModelEvaluator::ModelEvaluator(const Model& m)
-    : m_(m), ev_(m.dag), zero_(0.0) {
+ModelEvaluator::ModelEvaluator(const Model& m, Arithmetic arithmetic)
+    : m_(m), ev_(m.dag, arithmetic), zero_(0.0) {
   prog_f_ = m.dag.closure(m.equations);
   prog_fq_ = m.dag.closure(m.fq);
   prog_fx_ = m.dag.closure(m.fx);

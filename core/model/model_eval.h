@@ -11,7 +11,10 @@ namespace aspects {
 
 class ModelEvaluator {
  public:
-  explicit ModelEvaluator(const Model& m);
+  explicit ModelEvaluator(const Model& m, Arithmetic arithmetic = Arithmetic::DoublesFirst);
+
+  // How it computes (eval.h): the proofs' sweeps on it follow it (proofs/hansen_sengupta.h).
+  Arithmetic arithmetic() const { return ev_.arithmetic(); }
 
   const Model& model() const { return m_; }
   int n() const { return m_.n(); }

@@ -1,6 +1,5 @@
 #include "numerics/interval.h"
 
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -11,13 +10,6 @@ namespace aspects {
 
 void set_working_precision(long bits) { mpfr_set_default_prec(bits); }
 long working_precision() { return mpfr_get_default_prec(); }
-
-namespace {
-std::atomic<bool> g_double_fast_path{true};
-}  // namespace
-
-void set_double_fast_path(bool on) { g_double_fast_path = on; }
-bool double_fast_path() { return g_double_fast_path; }
 
 bool Interval::from_string(Interval& out, const std::string& text) {
   // mpfi_set_str rounds the left end down and the right end up.

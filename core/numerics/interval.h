@@ -15,17 +15,12 @@
 
 namespace aspects {
 
-// Precision (bits) of every interval created after the call. Call once at start-up,
-// before any Interval exists; intervals keep the precision they were created with.
+// Precision (bits) of every interval created after the call on this thread (MPFR keeps it
+// per thread): each thread of a run sets it before it makes an interval; intervals keep
+// the precision they were created with. How a run computes at 53 bits is
+// core/numerics/arithmetic.h.
 void set_working_precision(long bits);
 long working_precision();
-
-// At 53 bits the evaluator and the proofs' sweeps compute on doubles with MPFR's directed
-// rounding (core/numerics/double_interval.h): the same ends as MPFI, faster. On by default, for the
-// whole process; off (`aspects solve --mpfi-only`), every operation is MPFI's: a
-// cross-check that must give the same certificate.
-void set_double_fast_path(bool on);
-bool double_fast_path();
 
 class Interval {
  public:

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "certificate_sink.h"
+#include "numerics/arithmetic.h"
 #include "search/bisector.h"
 #include "search/branch_and_prune.h"
 #include "search/stop_condition.h"
@@ -27,6 +28,12 @@ struct AspectsConfig {
   // components not yet joined (a spanning forest: the same CSNCs, far fewer proofs).
   bool all_links = false;
   int threads = 1;
+  // Every evaluator of the run is made with it (its precision is the calling thread's,
+  // which each of the run's threads takes: pipeline/parallel.h).
+  Arithmetic arithmetic = Arithmetic::DoublesFirst;
+  // Told how each evaluator the phases make computes (ModelEvaluator::arithmetic), from
+  // the thread that made it: a test sees each run compute as it asked.
+  std::function<void(Arithmetic)> evaluator_made;
   // Threads of the phases after the search, if more (0: `threads`): in an MPI job, rank 0
   // takes over the cores of the ranks on its node, idle once the search is over.
   int later_threads = 0;
@@ -64,6 +71,10 @@ struct AspectsConfig {
   // The search asks this one between units that are not boxes: a first interrupt or a
   // spent box budget stops the search alone.
   bool search_stopped() const { return stop && stop->search_stopped(); }
+  // Reports an evaluator's arithmetic to evaluator_made, if set.
+  void made(Arithmetic a) const {
+    if (evaluator_made) evaluator_made(a);
+  }
 };
 
 }  // namespace aspects

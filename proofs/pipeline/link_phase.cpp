@@ -73,7 +73,8 @@ void LinkPhase::round(size_t count) {
   parallel_.arena().execute([&] {
     tbb::parallel_for(size_t(0), blocks, [&](size_t k) {
       set_working_precision(prec_);
-      ModelEvaluator ev(m_);
+      ModelEvaluator ev(m_, c_.arithmetic);
+      c_.made(ev.arithmetic());
       HsWorkspace ws;
       LinkProof lp;
       LocalJoins local;

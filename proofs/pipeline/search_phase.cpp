@@ -34,9 +34,11 @@ struct NcspParts {
   FactorSigns signs;
 
   NcspParts(const Model& m, const AspectsConfig& c, const std::vector<Factor>& factors)
-      : ev(m), constraints(m, ev), equations(ev), contractor(equations, c.grid_records),
+      : ev(m, c.arithmetic), constraints(m, ev), equations(ev), contractor(equations, c.grid_records),
         prover(ev, constraints, c.tau, c.max_newton_iterations, c.grid_records),
-        bisector(make_bisector(c.bisector, m, c.eps)), signs(ev, m, factors) {}
+        bisector(make_bisector(c.bisector, m, c.eps)), signs(ev, m, factors) {
+    c.made(ev.arithmetic());
+  }
   SearchParts parts() { return {contractor, prover, *bisector, constraints, signs}; }
 };
 

@@ -24,9 +24,12 @@ CuspidalWitnesses witness_phase(const Model& model, const AspectsConfig& config,
   struct AssemblyProver {
     ModelEvaluator ev;
     HsWorkspace ws;
-    explicit AssemblyProver(const Model& m) : ev(m) {}
+    AssemblyProver(const Model& m, const AspectsConfig& c) : ev(m, c.arithmetic) {
+      c.made(ev.arithmetic());
+    }
   };
-  tbb::enumerable_thread_specific<AssemblyProver> provers([&] { return AssemblyProver(model); });
+  tbb::enumerable_thread_specific<AssemblyProver> provers(
+      [&] { return AssemblyProver(model, config); });
   auto prove = [&](CommandWitness& cw) {
     AssemblyProver& p = provers.local();
     return prove_command_witness(p.ev, boxes.ends(), config.tau, cw, p.ws);

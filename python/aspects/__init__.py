@@ -54,7 +54,7 @@ def _number(name, value, kind=float):
 
 def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *,
           max_boxes=None, prec=53, tau=1.01, all_links=False, bisect=None, certificate=True,
-          compress_certificate=False):
+          compress_certificate=False, mpfi_only=False):
     """Solve `model` as `aspects solve` does; returns a Result. `model`: an aspects.Model,
     or the path of a .robot file (str or os.PathLike; read as Model.from_file reads it).
 
@@ -70,7 +70,9 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     (ValueError at once when another run holds it). progress: None (quiet),
     True (tqdm when installed, else a line on stderr now and then), or a callable given a
     dict (processed, solutions, undecided, decided share, seconds, phases) about every
-    0.1 s; an exception it raises stops the run and is raised here.
+    0.1 s; an exception it raises stops the run and is raised here. mpfi_only: every
+    operation MPFI's, as `aspects solve --mpfi-only` (the same result, slower); it is this
+    run's alone, also when other solves run at once in the process.
     """
     if isinstance(model, (str, _os.PathLike)):
         model = Model.from_file(_os.fspath(model))
@@ -97,7 +99,7 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
         core, interrupted = _aspects._solve(
             model, eps, threads, time_limit, max_boxes, _number("prec", prec, int),
             _number("tau", tau), bool(all_links), bisect or "", out, bool(certificate),
-            bool(compress_certificate), callback)
+            bool(compress_certificate), bool(mpfi_only), callback)
     finally:
         finish()
     result = Result(core)

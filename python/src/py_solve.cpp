@@ -46,7 +46,7 @@ struct SolveRequest {
   double eps = 0.1, tau = 1.01, time_limit = -1;
   long prec = 53, max_boxes = -1;
   int threads = 0;
-  bool all_links = false, certificate = true, compress_certificate = false;
+  bool all_links = false, certificate = true, compress_certificate = false, mpfi_only = false;
   std::string bisect, out;
 };
 
@@ -60,6 +60,7 @@ SolveOptions options_of(const PyModel& pm, const SolveRequest& q) {
   o.time_limit = q.time_limit;
   o.max_boxes = q.max_boxes;
   o.all_links = q.all_links;
+  o.mpfi_only = q.mpfi_only;
   o.no_cert = !q.certificate;
   o.compress_cert = q.compress_certificate;
   o.out_dir = q.out;
@@ -180,7 +181,7 @@ void run_polling(const std::function<void()>& work, StopCondition& stop, Progres
 
 pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::object& callback) {
   SolveOptions o = options_of(pm, request);
-  set_arithmetic(o);  // this thread's precision: the model's intervals are made here
+  set_precision(o);  // this thread's precision: the model's intervals are made here
   Model model = parse_model(pm.source, pm.file);
   choose_bisect(o, model);
   AspectsConfig cfg = engine_config(o);
@@ -246,7 +247,7 @@ void bind_solve(pyb::module_& m) {
       "_solve",
       [](const PyModel& model, double eps, int threads, double time_limit, long max_boxes,
          long prec, double tau, bool all_links, const std::string& bisect,
-         const std::string& out, bool certificate, bool compress_certificate,
+         const std::string& out, bool certificate, bool compress_certificate, bool mpfi_only,
          const pyb::object& progress) {
         SolveRequest q;
         q.eps = eps;
@@ -260,12 +261,13 @@ void bind_solve(pyb::module_& m) {
         q.out = out;
         q.certificate = certificate;
         q.compress_certificate = compress_certificate;
+        q.mpfi_only = mpfi_only;
         return solve(model, q, progress);
       },
       pyb::arg("model"), pyb::arg("eps"), pyb::arg("threads"), pyb::arg("time_limit"),
       pyb::arg("max_boxes"), pyb::arg("prec"), pyb::arg("tau"), pyb::arg("all_links"),
       pyb::arg("bisect"), pyb::arg("out"), pyb::arg("certificate"),
-      pyb::arg("compress_certificate"), pyb::arg("progress"),
+      pyb::arg("compress_certificate"), pyb::arg("mpfi_only"), pyb::arg("progress"),
       "Solve; returns (Result, interrupted). Use aspects.solve, which wraps it.");
 }
 

@@ -598,3 +598,40 @@ def test_query_many_bad_poses(rprpr, poses, error, match):
     _, _, r, _ = rprpr
     with pytest.raises(error, match=match):
         r.query(poses)
+
+
+def test_solves_at_once_keep_their_own_arithmetic():
+    """Three solves at once on three Python threads, one MPFI only and one at 80 bits, each
+    give what the same solve gives alone: the arithmetic is each run's own (issue 48; the
+    C++ test test_two_solves sees each run's evaluators compute as it asked)."""
+    model = aspects.Model.from_file(RPRPR)
+    asks = [{}, {"mpfi_only": True}, {"prec": 80}]
+    alone = [aspects.solve(model, eps=0.03, threads=1, **a) for a in asks]
+    together = [None] * len(asks)
+    spans = [None] * len(asks)
+    start = threading.Barrier(len(asks))
+
+    def run(i):
+        start.wait()
+        t = time.monotonic()
+        together[i] = aspects.solve(model, eps=0.03, threads=1, **asks[i])
+        spans[i] = (t, time.monotonic())
+
+    threads = [threading.Thread(target=run, args=(i,)) for i in range(len(asks))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert max(s[0] for s in spans) < min(s[1] for s in spans)  # all three ran at once
+    for a, b in zip(alone, together):
+        assert b.summary["boxes"] == a.summary["boxes"]
+        assert b.summary["csncs"]["sizes"] == a.summary["csncs"]["sizes"]
+        assert b.lower_bound == a.lower_bound == 2
+        assert np.array_equal(b.ids, a.ids)
+        assert np.array_equal(b.lower, a.lower, equal_nan=True)
+        assert np.array_equal(b.upper, a.upper, equal_nan=True)
+    # MPFI alone gives the double path's result, bit for bit.
+    assert alone[1].summary["boxes"] == alone[0].summary["boxes"]
+    assert np.array_equal(alone[1].lower, alone[0].lower, equal_nan=True)
+    for a in alone:  # as `aspects solve robots/rprpr.robot --eps 0.03`
+        assert (a.summary["boxes"]["solution"], a.summary["boxes"]["undecided"]) == (5314, 2358)
