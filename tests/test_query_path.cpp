@@ -448,7 +448,7 @@ TEST(QueryPath, PathAcrossTheLargestCsncIsCertifiedSegmentBySegment) {
   }
 }
 
-// Issue 51: the path is short by default, and every segment of it is certified.
+// Every segment of a path is certified, re-checked here through the library.
 void expect_certified(const LoadedResult& r, ModelEvaluator& ev, const PathResult& p) {
   CsncLinks links(r, ev, p.csnc);
   size_t bad = 0;
@@ -486,9 +486,9 @@ TEST(PathShortcut, ReadmeExampleIsOneStraightSegment) {
 }
 
 TEST(PathShortcut, AroundAHoleTheShortcutKeepsFewCornersAllCertified) {
-  // From (3.6, -2.6) to (3.6, 3.7) in CSNC 1 the straight line leaves the CSNC: before
-  // issue 51 (the solve's links only) 35 waypoints, length 7.41563; the chain of links
-  // proved on demand has 30, the shortcut 5 (3 corners), length 6.6614 for 6.3 straight.
+  // From (3.6, -2.6) to (3.6, 3.7) in CSNC 1 the straight line leaves the CSNC: the chain of
+  // links proved on demand has 30 waypoints, the shortcut 5 (3 corners), length 6.6614 for
+  // 6.3 straight.
   LoadedResult& r = rrrrr();
   ModelEvaluator ev(r.model);
   const std::vector<double> from{3.6, -2.6}, to{3.6, 3.7};

@@ -1,4 +1,4 @@
-// Two solves at once in one process, one of them MPFI only (issue 48): each run's
+// Two solves at once in one process, one of them MPFI only: each run's
 // evaluators compute as its own configuration asks, and each result is a single run's.
 // Deliberate break that made it fail: the arithmetic read from one process-wide switch
 // that each run sets as it starts (the old `set_double_fast_path`): both runs then
