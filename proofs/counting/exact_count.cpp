@@ -320,105 +320,7 @@ class Counter {
       return;
     }
     if (cv == ChartVerdict::Proved) {
-      const int n = m_.n();
-      // z: U × the range of w (every w(u), u ∈ U, lies in it).
-      Box z = c.box;
-      for (int j = 0; j < n; ++j) z[chart.w[j]] = chart.w_range[j];
-      // The box keeps its W, met with the range (every solution of B is on the graph): the
-      // piece is the graph over {u ∈ U : w(u) ∈ W}, whose faces are constraints of the star
-      // test. (Growing the box to U × the range instead made it overlap its neighbours, the
-      // more so as the range is overestimated: on RRRRR ten times the adjacencies.)
-      std::vector<StarConstraint> faces;
-      bool inside = true;  // w(U) ⊆ W: the graph is over the whole of U
-      // A box contracted around its solutions touches them at its faces, tangentially where
-      // w has an extreme inside U: a face constraint there cannot be cleared. When the range
-      // is little wider than the box (no cut, only overestimation), the box grows to it
-      // within the domain instead, and only the domain's faces remain.
-      // So does a box on whose U × range every factor has one sign: its piece is then the
-      // whole graph, connected with no test (a star test with the cut's faces costs tens of
-      // sub-boxes).
-      std::vector<Interval> rv;
-      bool one_class = fg_.values(ev_, z, rv);
-      for (const Interval& x : rv) one_class = one_class && (x.certainly_pos() || x.certainly_neg());
-      if (!c.solution && (one_class || small_growth(c.box, chart))) {
-        for (int j = 0; j < n; ++j) {
-          const int v = chart.w[j];
-          double lo = chart.w_range[j].lo_down(), hi = chart.w_range[j].hi_up();
-          if (!periodic_[v]) {
-            lo = std::max(lo, m_.vars[v].domain.lo_down());
-            hi = std::min(hi, m_.vars[v].domain.hi_up());
-          }
-          c.box[v].set_hull(lo, hi);
-        }
-      }
-      for (int j = 0; j < n; ++j) {
-        const int v = chart.w[j];
-        const double lo = std::max(c.box[v].lo_down(), chart.w_range[j].lo_down());
-        const double hi = std::min(c.box[v].hi_up(), chart.w_range[j].hi_up());
-        if (!(lo <= hi)) {  // no solution in the box
-          for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
-          return;
-        }
-        if (!c.solution) c.box[v].set_hull(lo, hi);
-        if (chart.w_range[j].lo_down() < c.box[v].lo_down()) {
-          faces.push_back({StarConstraint::WLower, j, 1, c.box[v].lo_down()});
-          inside = false;
-        }
-        if (chart.w_range[j].hi_up() > c.box[v].hi_up()) {
-          faces.push_back({StarConstraint::WUpper, j, 1, c.box[v].hi_up()});
-          inside = false;
-        }
-      }
-      std::vector<Interval> zv;
-      const bool zdefined = fg_.values(ev_, c.box, zv);  // the piece lies in the box
-      bool certain = zdefined;
-      for (const Interval& x : zv) certain = certain && (x.certainly_pos() || x.certainly_neg());
-      if (certain && inside) {
-        // Every factor has one sign on the graph over U (connected, nonempty): one class.
-        uint32_t cls = 0;
-        for (int i = 0; i < p; ++i) cls |= uint32_t(zv[i].certainly_pos()) << i;
-        for (uint32_t s : classes)
-          c.pieces.push_back({s, s == cls ? PieceState::Connected : PieceState::Empty,
-                              OpenReason::NoPoint});
-        return;
-      }
-      if (c.solution) {
-        // The graph is connected and every factor nonzero on it (P2): it lies in one class,
-        // the class of any of its points.
-        for (uint32_t s : classes) {
-          ClassPoint pt;
-          if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, pt, 1) != PointVerdict::Found)
-            continue;
-          for (uint32_t t : classes)
-            c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
-                                OpenReason::NoPoint});
-          return;
-        }
-        for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
-        return;
-      }
-      for (uint32_t s : classes) {
-        if (zdefined && class_empty(zv, s)) {
-          c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
-          continue;
-        }
-        ClassPoint centre;
-        if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, centre, 3) != PointVerdict::Found) {
-          const bool empty = prove_piece_empty(ev_, fg_, chart, z, s, ws_) == EmptyVerdict::Empty;
-          c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
-                              OpenReason::NoPoint});
-          continue;
-        }
-        std::vector<StarConstraint> tests = faces;
-        for (int i = 0; i < p; ++i)
-          if (!zdefined || !(zv[i].certainly_pos() || zv[i].certainly_neg()))
-            tests.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
-        const bool star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{},
-                                    ws_, star_boxes_) == StarVerdict::StarShaped;
-        c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
-                            OpenReason::NotStar});
-        if (!star) c.split_in = chart.u;
-      }
+      decide_charted(c, chart, classes);
       return;
     }
     // No chart: the box is bisected whatever else is proved of it (a point would only show
@@ -427,6 +329,124 @@ class Counter {
     const int cut = chart_split_variable(ev_, c.box, domain_width_);
     if (cut >= 0) c.split_in = {cut};
     for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
+  }
+
+  // The pieces of a box on which `chart` is proved (FORMAT.md "Counting", C2–C4).
+  void decide_charted(Cell& c, const Chart& chart, const std::vector<uint32_t>& classes) {
+    const int n = m_.n(), p = fg_.factors();
+    // z: U × the range of w (every w(u), u ∈ U, lies in it).
+    Box z = c.box;
+    for (int j = 0; j < n; ++j) z[chart.w[j]] = chart.w_range[j];
+    std::vector<StarConstraint> faces;
+    bool inside = true;  // w(U) ⊆ W: the graph is over the whole of U
+    if (!fit_box_to_chart(c, chart, z, faces, inside)) {
+      for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+      return;
+    }
+    std::vector<Interval> zv;
+    const bool zdefined = fg_.values(ev_, c.box, zv);  // the piece lies in the box
+    const bool certain = zdefined && all_signs_certain(zv);
+    if (certain && inside) {
+      // Every factor has one sign on the graph over U (connected, nonempty): one class.
+      uint32_t cls = 0;
+      for (int i = 0; i < p; ++i) cls |= uint32_t(zv[i].certainly_pos()) << i;
+      for (uint32_t s : classes)
+        c.pieces.push_back({s, s == cls ? PieceState::Connected : PieceState::Empty,
+                            OpenReason::NoPoint});
+      return;
+    }
+    if (c.solution) {
+      // The graph is connected and every factor nonzero on it (P2): it lies in one class,
+      // the class of any of its points.
+      for (uint32_t s : classes) {
+        ClassPoint pt;
+        if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, pt, 1) != PointVerdict::Found)
+          continue;
+        for (uint32_t t : classes)
+          c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
+                              OpenReason::NoPoint});
+        return;
+      }
+      for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
+      return;
+    }
+    for (uint32_t s : classes) {
+      if (zdefined && class_empty(zv, s)) {
+        c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+        continue;
+      }
+      ClassPoint centre;
+      if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, centre, 3) != PointVerdict::Found) {
+        const bool empty = prove_piece_empty(ev_, fg_, chart, z, s, ws_) == EmptyVerdict::Empty;
+        c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
+                            OpenReason::NoPoint});
+        continue;
+      }
+      std::vector<StarConstraint> tests = faces;
+      for (int i = 0; i < p; ++i)
+        if (!zdefined || !(zv[i].certainly_pos() || zv[i].certainly_neg()))
+          tests.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
+      const bool star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{},
+                                  ws_, star_boxes_) == StarVerdict::StarShaped;
+      c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
+                          OpenReason::NotStar});
+      if (!star) c.split_in = chart.u;
+    }
+  }
+
+  // The box as the chart makes it: its W met with the range, with the faces of W the graph
+  // crosses, or grown to the range. False when the box holds no solution.
+  bool fit_box_to_chart(Cell& c, const Chart& chart, const Box& z,
+                        std::vector<StarConstraint>& faces, bool& inside) {
+    const int n = m_.n();
+    // The box keeps its W, met with the range (every solution of B is on the graph): the
+    // piece is the graph over {u ∈ U : w(u) ∈ W}, whose faces are constraints of the star
+    // test. (Growing the box to U × the range instead made it overlap its neighbours, the
+    // more so as the range is overestimated: on RRRRR ten times the adjacencies.)
+    faces.clear();
+    inside = true;
+    // A box contracted around its solutions touches them at its faces, tangentially where
+    // w has an extreme inside U: a face constraint there cannot be cleared. When the range
+    // is little wider than the box (no cut, only overestimation), the box grows to it
+    // within the domain instead, and only the domain's faces remain.
+    // So does a box on whose U × range every factor has one sign: its piece is then the
+    // whole graph, connected with no test (a star test with the cut's faces costs tens of
+    // sub-boxes).
+    std::vector<Interval> rv;
+    const bool one_class = fg_.values(ev_, z, rv) && all_signs_certain(rv);
+    if (!c.solution && (one_class || small_growth(c.box, chart))) {
+      for (int j = 0; j < n; ++j) {
+        const int v = chart.w[j];
+        double lo = chart.w_range[j].lo_down(), hi = chart.w_range[j].hi_up();
+        if (!periodic_[v]) {
+          lo = std::max(lo, m_.vars[v].domain.lo_down());
+          hi = std::min(hi, m_.vars[v].domain.hi_up());
+        }
+        c.box[v].set_hull(lo, hi);
+      }
+    }
+    for (int j = 0; j < n; ++j) {
+      const int v = chart.w[j];
+      const double lo = std::max(c.box[v].lo_down(), chart.w_range[j].lo_down());
+      const double hi = std::min(c.box[v].hi_up(), chart.w_range[j].hi_up());
+      if (!(lo <= hi)) return false;  // no solution in the box
+      if (!c.solution) c.box[v].set_hull(lo, hi);
+      if (chart.w_range[j].lo_down() < c.box[v].lo_down()) {
+        faces.push_back({StarConstraint::WLower, j, 1, c.box[v].lo_down()});
+        inside = false;
+      }
+      if (chart.w_range[j].hi_up() > c.box[v].hi_up()) {
+        faces.push_back({StarConstraint::WUpper, j, 1, c.box[v].hi_up()});
+        inside = false;
+      }
+    }
+    return true;
+  }
+
+  static bool all_signs_certain(const std::vector<Interval>& values) {
+    for (const Interval& x : values)
+      if (!(x.certainly_pos() || x.certainly_neg())) return false;
+    return true;
   }
 
   // The chart's range sticks out of the box by at most the box's width on each side.
