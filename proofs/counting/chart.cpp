@@ -14,92 +14,93 @@ std::vector<int> chart_complement(const Model& m, const std::vector<int>& w) {
   return u;
 }
 
-std::vector<std::vector<int>> chart_candidates(ModelEvaluator& ev, const Box& box, int mixed) {
+namespace {
+
+// [Fx Fq] at the middle of the box, columns in model order; false if undefined there.
+bool middle_jacobian(ModelEvaluator& ev, const Box& box, Eigen::MatrixXd& J) {
   const Model& m = ev.model();
-  const int n = m.n(), nv = int(m.vars.size());
-  std::vector<std::vector<int>> out{m.command, m.pose};
-  if (mixed <= 0) return out;
-  // [Fx Fq] at the middle of the box, columns in model order.
+  const int n = m.n();
   Box mid = box;
   for (auto& x : mid) x.set_point(x.mid());
   IMatrix Jx, Jq;
   if (ev.jacobian_x(mid, Jx) != EvalStatus::Defined || ev.jacobian_q(mid, Jq) != EvalStatus::Defined)
-    return out;
-  Eigen::MatrixXd J(n, nv);
+    return false;
+  J.resize(n, int(m.vars.size()));
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) J(i, m.pose[j]) = Jx(i, j).mid();
     for (int j = 0; j < n; ++j) J(i, m.command[j]) = Jq(i, j).mid();
   }
-  // Every n-subset but the two above, scored by |det| over the product of column norms.
-  std::vector<std::pair<double, std::vector<int>>> scored;
+  return J.allFinite();
+}
+
+struct ChartGuess {
+  std::vector<int> w;
+  double size;  // of U × r, each width over its scale
+  int cut;      // the u adding most to it
+};
+
+// Every chart whose ∂_w f is regular at the middle, smallest predicted box first.
+std::vector<ChartGuess> rank_charts(ModelEvaluator& ev, const Box& box,
+                                    const std::vector<double>& scale) {
+  const Model& m = ev.model();
+  const int n = m.n(), nv = int(m.vars.size());
+  std::vector<ChartGuess> out;
+  Eigen::MatrixXd J;
+  if (!middle_jacobian(ev, box, J)) return out;
   std::vector<int> pick(nv, 0);
   std::fill(pick.end() - n, pick.end(), 1);
   do {
-    std::vector<int> w;
+    ChartGuess g;
     for (int v = 0; v < nv; ++v)
-      if (pick[v]) w.push_back(v);
-    if (w == m.command || w == m.pose) continue;
-    Eigen::MatrixXd A(n, n);
-    double norms = 1;
-    for (int j = 0; j < n; ++j) {
-      A.col(j) = J.col(w[j]);
-      norms *= std::max(A.col(j).norm(), 1e-300);
-    }
-    const double score = std::fabs(A.determinant()) / norms;
-    if (std::isfinite(score) && score > 1e-6) scored.push_back({score, w});
-  } while (std::next_permutation(pick.begin(), pick.end()));
-  std::sort(scored.begin(), scored.end(),
-            [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (int k = 0; k < mixed && k < int(scored.size()); ++k) out.push_back(scored[k].second);
-  return out;
-}
-
-int chart_split_variable(ModelEvaluator& ev, const Box& box, const std::vector<double>& scale) {
-  const Model& m = ev.model();
-  const int n = m.n(), nv = int(m.vars.size());
-  Box mid = box;
-  for (auto& x : mid) x.set_point(x.mid());
-  IMatrix Jx, Jq;
-  if (ev.jacobian_x(mid, Jx) != EvalStatus::Defined || ev.jacobian_q(mid, Jq) != EvalStatus::Defined)
-    return -1;
-  Eigen::MatrixXd J(n, nv);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) J(i, m.pose[j]) = Jx(i, j).mid();
-    for (int j = 0; j < n; ++j) J(i, m.command[j]) = Jq(i, j).mid();
-  }
-  double best_size = INFINITY;
-  int best_var = -1;
-  for (const std::vector<int>& w : chart_candidates(ev, box, nv)) {
-    const std::vector<int> u = chart_complement(m, w);
+      if (pick[v]) g.w.push_back(v);
+    const std::vector<int> u = chart_complement(m, g.w);
     Eigen::MatrixXd Jw(n, n), Ju(n, n);
-    for (int j = 0; j < n; ++j) Jw.col(j) = J.col(w[j]), Ju.col(j) = J.col(u[j]);
+    for (int j = 0; j < n; ++j) Jw.col(j) = J.col(g.w[j]), Ju.col(j) = J.col(u[j]);
     Eigen::FullPivLU<Eigen::MatrixXd> lu(Jw);
     if (!lu.isInvertible()) continue;
     const Eigen::MatrixXd X = lu.solve(Ju);
     if (!X.allFinite()) continue;
-    // The box U × r in relative widths, and each u_k's share of it.
-    double size = 0;
     std::vector<double> share(n, 0);
+    g.size = 0;
     for (int k = 0; k < n; ++k) {
-      const double uk = box[u[k]].width_up();
-      share[k] = uk / scale[u[k]];
-      size = std::max(size, share[k]);
+      share[k] = box[u[k]].width_up() / scale[u[k]];
+      g.size = std::max(g.size, share[k]);
     }
     for (int j = 0; j < n; ++j) {
       double r = 0;
       for (int k = 0; k < n; ++k) {
-        const double c = std::fabs(X(j, k)) * box[u[k]].width_up() / scale[w[j]];
+        const double c = std::fabs(X(j, k)) * box[u[k]].width_up() / scale[g.w[j]];
         r += c;
         share[k] = std::max(share[k], c);
       }
-      size = std::max(size, r);
+      g.size = std::max(g.size, r);
     }
-    if (size < best_size) {
-      best_size = size;
-      best_var = u[std::max_element(share.begin(), share.end()) - share.begin()];
-    }
+    if (!std::isfinite(g.size)) continue;
+    g.cut = u[std::max_element(share.begin(), share.end()) - share.begin()];
+    out.push_back(std::move(g));
+  } while (std::next_permutation(pick.begin(), pick.end()));
+  std::stable_sort(out.begin(), out.end(),
+                   [](const ChartGuess& a, const ChartGuess& b) { return a.size < b.size; });
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> chart_candidates(ModelEvaluator& ev, const Box& box,
+                                               const std::vector<double>& scale, int limit) {
+  std::vector<std::vector<int>> out;
+  for (ChartGuess& g : rank_charts(ev, box, scale)) {
+    if (int(out.size()) >= limit) break;
+    out.push_back(std::move(g.w));
   }
-  return best_var;
+  // Undefined or singular at the middle: the proof may still hold on the box.
+  if (out.empty()) out = {ev.model().command, ev.model().pose};
+  return out;
+}
+
+int chart_split_variable(ModelEvaluator& ev, const Box& box, const std::vector<double>& scale) {
+  const std::vector<ChartGuess> ranked = rank_charts(ev, box, scale);
+  return ranked.empty() ? -1 : ranked.front().cut;
 }
 
 ChartVerdict prove_chart(ModelEvaluator& ev, const Box& box, const std::vector<int>& w,

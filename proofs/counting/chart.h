@@ -5,8 +5,8 @@
 // with w the unknowns: the proof gives ∀u ∈ U ∃! w ∈ W̃, lying in RANGE ⊆ int W̃; with the
 // box's W ⊆ W̃ every solution of B is on that graph (w is continuous: a closed graph in a
 // compact set). The pose chart (w = the commands) fails near det Fq = 0, the command chart
-// (w = the pose) near det Fx = 0; where both vanish, a mixed chart (the columns of [Fx Fq]
-// best conditioned at the box's middle) may hold.
+// (w = the pose) near det Fx = 0; a mixed chart (some commands and some pose variables as
+// w) holds where neither does, and is often the better fitted near one of them.
 #pragma once
 
 #include <cstdint>
@@ -31,10 +31,13 @@ struct Chart {
 // u: the variables not in w, in model order.
 std::vector<int> chart_complement(const Model& m, const std::vector<int>& w);
 
-// The charts worth trying on a box, as their w, best first: the pose chart, the command
-// chart, then at most `mixed` others by the conditioning of their Jacobian at the box's
-// middle (a choice in doubles; the proof decides).
-std::vector<std::vector<int>> chart_candidates(ModelEvaluator& ev, const Box& box, int mixed = 2);
+// The charts worth trying on a box, as their w, at most `limit`, best first: by the size of
+// the box U × r their first-order graph fills (below), each width over `scale`, the
+// variable's domain width (a choice in doubles; the proof decides). Near a serial
+// singularity of one leg the likeliest chart is mixed, with that leg's command among u:
+// ranking by conditioning alone put the nearly zero column of that command first.
+std::vector<std::vector<int>> chart_candidates(ModelEvaluator& ev, const Box& box,
+                                               const std::vector<double>& scale, int limit = 3);
 
 // Where to cut a box on which no chart was proved (a choice in doubles, at the box's
 // middle): for each candidate chart, the first-order range of w over U is

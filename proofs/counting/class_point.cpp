@@ -9,32 +9,33 @@ namespace aspects {
 
 namespace {
 
-struct Candidate {
-  double margin;
-  std::vector<double> u, w;
-};
-
-// Newton in doubles for w at the u-point, from the middle of the box's w-part: a choice.
-bool newton_w(ModelEvaluator& ev, const Box& box, const std::vector<int>& w,
-              std::vector<double>& wpt) {
+// Newton in doubles for w at the u-point of `pt` (its w-part: the box's), from `start` or
+// the middle of the w-part: a choice. False when it fails or ends outside the w-part.
+bool newton_w(ModelEvaluator& ev, Box& pt, const Box& box, const std::vector<int>& w,
+              const std::vector<double>* start, std::vector<double>& wpt) {
   const int n = ev.n();
-  Box pt = box;
-  for (int j = 0; j < n; ++j) pt[w[j]].set_point(box[w[j]].mid());
   const Model& m = ev.model();
-  std::vector<Interval> f;
-  IMatrix Jx, Jq, Jw;
+  for (int j = 0; j < n; ++j) pt[w[j]].set_point(start ? (*start)[j] : box[w[j]].mid());
+  std::vector<DInterval> f;
+  DMatrix Jx, Jq, Jw;
   Eigen::MatrixXd A(n, n);
   Eigen::VectorXd b(n);
-  for (int it = 0; it < 30; ++it) {
-    if (ev.equations(pt, f) != EvalStatus::Defined) return false;
-    if (ev.jacobian_x(pt, Jx) != EvalStatus::Defined || ev.jacobian_q(pt, Jq) != EvalStatus::Defined)
-      return false;
-    for (int i = 0; i < n; ++i) b(i) = f[i].mid();
+  bool ok = true;
+  for (int it = 0; it < 30 && ok; ++it) {
+    if (ev.equations(pt, f) != EvalStatus::Defined || ev.jacobian_x(pt, Jx) != EvalStatus::Defined ||
+        ev.jacobian_q(pt, Jq) != EvalStatus::Defined) {
+      ok = false;
+      break;
+    }
+    for (int i = 0; i < n; ++i) b(i) = 0.5 * (f[i].lo + f[i].hi);
     jacobian_columns(m, Jx, Jq, w, Jw);
     for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) A(i, j) = Jw(i, j).mid();
-    Eigen::VectorXd dx = A.fullPivLu().solve(b);
-    if (!dx.allFinite()) return false;
+      for (int j = 0; j < n; ++j) A(i, j) = 0.5 * (Jw(i, j).lo + Jw(i, j).hi);
+    const Eigen::VectorXd dx = A.fullPivLu().solve(b);
+    if (!dx.allFinite()) {
+      ok = false;
+      break;
+    }
     double step = 0;
     for (int j = 0; j < n; ++j) {
       const double x = pt[w[j]].mid() - dx(j);
@@ -44,130 +45,156 @@ bool newton_w(ModelEvaluator& ev, const Box& box, const std::vector<int>& w,
     if (step < 1e-15) break;
   }
   wpt.resize(n);
-  for (int j = 0; j < n; ++j) {
+  for (int j = 0; j < n && ok; ++j) {
     wpt[j] = pt[w[j]].mid();
-    if (!(wpt[j] >= box[w[j]].lo_down() && wpt[j] <= box[w[j]].hi_up())) return false;
+    ok = wpt[j] >= box[w[j]].lo_down() && wpt[j] <= box[w[j]].hi_up();
   }
-  return true;
+  return ok;
 }
 
 }  // namespace
 
-PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
-                              const std::vector<int>& w, uint32_t cls, HsWorkspace& ws,
-                              ClassPoint& out, int per_axis) {
-  const Model& m = ev.model();
+ClassPointSearch::ClassPointSearch(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
+                                   const std::vector<int>& w_vars, int per_axis)
+    : ev_(ev), fg_(fg), box_(box), u_vars_(chart_complement(ev.model(), w_vars)),
+      w_vars_(w_vars), per_axis_(per_axis), pt_(box) {
   const int n = ev.n(), p = fg.factors();
-  const std::vector<int> u = chart_complement(m, w);
+  // Scales of the factors over the box, to compare their margins with the faces'.
+  scale_.assign(p, 1.0);
+  if (fg.values(ev, box, values_))
+    for (int i = 0; i < p; ++i) {
+      const double s = std::max(std::fabs(values_[i].lo_down()), std::fabs(values_[i].hi_up()));
+      if (s > 0 && std::isfinite(s)) scale_[i] = s;
+    }
   // The grid of u-points: per axis the centres of per_axis equal cells (one point on a
   // degenerate axis).
-  std::vector<Candidate> found;
   std::vector<int> idx(n, 0);
-  std::vector<Interval> values, whole;
-  // Scales of the factors over the box, to compare their margins with the faces'.
-  const bool scaled = fg.values(ev, box, whole);
-  Box pt = box;
-  // The depth of a u-point in the piece: the least of the factors' margins (relative to
-  // their range over the box) and the distances to the faces of W (relative to its width);
-  // a star centre deep inside has the best chance. False when Newton leaves the box.
-  auto depth = [&](Candidate& c) {
-    for (int k = 0; k < n; ++k) pt[u[k]].set_point(c.u[k]);
-    const bool ok = newton_w(ev, pt, w, c.w);
-    if (ok) {
-      for (int j = 0; j < n; ++j) pt[w[j]].set_point(c.w[j]);
-      c.margin = -INFINITY;
-      if (fg.values(ev, pt, values)) {
-        c.margin = INFINITY;
-        for (int i = 0; i < p; ++i) {
-          const double s = (cls >> i) & 1 ? 1.0 : -1.0;
-          const double g = s * values[i].mid();
-          double scale = std::fabs(values[i].mid());
-          if (scaled) scale = std::max(std::fabs(whole[i].lo_down()), std::fabs(whole[i].hi_up()));
-          c.margin = std::min(c.margin, g / (scale > 0 ? scale : 1.0));
-        }
-        for (int j = 0; j < n; ++j) {
-          const double lo = box[w[j]].lo_down(), hi = box[w[j]].hi_up();
-          if (hi > lo) c.margin = std::min(c.margin, std::min(c.w[j] - lo, hi - c.w[j]) / (hi - lo));
-        }
-      }
-      for (int j = 0; j < n; ++j) pt[w[j]] = box[w[j]];
-    }
-    return ok;
+  auto cells = [&](int k) {
+    return box[u_vars_[k]].lo_down() == box[u_vars_[k]].hi_up() ? 1 : per_axis;
   };
-  Candidate best;
-  best.margin = -INFINITY;
   for (;;) {
-    Candidate c;
-    c.u.resize(n);
+    std::vector<double> u(n);
     for (int k = 0; k < n; ++k) {
-      const double lo = box[u[k]].lo_down(), hi = box[u[k]].hi_up();
-      const int cells = lo == hi ? 1 : per_axis;
-      c.u[k] = std::min(hi, std::max(lo, lo + (hi - lo) * (idx[k] + 0.5) / cells));
+      const double lo = box[u_vars_[k]].lo_down(), hi = box[u_vars_[k]].hi_up();
+      u[k] = std::min(hi, std::max(lo, lo + (hi - lo) * (idx[k] + 0.5) / cells(k)));
     }
-    if (depth(c)) {
-      if (c.margin > 0) found.push_back(c);
-      if (c.margin > best.margin) best = c;
-    }
+    Sample s;
+    if (sample(std::move(u), nullptr, s)) grid_.push_back(std::move(s));
     int k = 0;
     for (; k < n; ++k) {
-      const int cells = box[u[k]].lo_down() == box[u[k]].hi_up() ? 1 : per_axis;
-      if (++idx[k] < cells) break;
+      if (++idx[k] < cells(k)) break;
       idx[k] = 0;
     }
     if (k == n) break;
   }
-  // A piece that is a sliver (the class cut off by a singular surface near a corner of the
-  // box) holds no grid point: climb from the deepest one, coordinate by coordinate, with
-  // halving steps, towards more depth.
-  if (found.empty() && !best.u.empty()) {
-    std::vector<double> step(n);
-    for (int k = 0; k < n; ++k) step[k] = 0.25 * box[u[k]].width_up() / per_axis;
-    for (int it = 0; it < 48; ++it) {
-      bool moved = false;
-      for (int k = 0; k < n; ++k)
-        for (double dir : {-1.0, 1.0}) {
-          Candidate c = best;
-          c.u[k] = std::min(box[u[k]].hi_up(), std::max(box[u[k]].lo_down(), c.u[k] + dir * step[k]));
-          if (c.u[k] != best.u[k] && depth(c) && c.margin > best.margin) best = c, moved = true;
-        }
-      if (!moved)
-        for (double& h : step) h *= 0.5;
-      if (best.margin > 0 && !moved) break;
+}
+
+// The solution over u and its factors; false when Newton leaves the box or a factor is
+// undefined there.
+bool ClassPointSearch::sample(std::vector<double> u, const std::vector<double>* start,
+                              Sample& out) {
+  const int n = ev_.n(), p = fg_.factors();
+  for (int k = 0; k < n; ++k) pt_[u_vars_[k]].set_point(u[k]);
+  out.u = std::move(u);
+  bool ok = newton_w(ev_, pt_, box_, w_vars_, start, out.w);
+  if (ok) {
+    for (int j = 0; j < n; ++j) pt_[w_vars_[j]].set_point(out.w[j]);
+    ok = fg_.values(ev_, pt_, values_);
+  }
+  if (ok) {
+    out.g.resize(p);
+    for (int i = 0; i < p; ++i) out.g[i] = values_[i].mid() / scale_[i];
+    out.face = INFINITY;
+    for (int j = 0; j < n; ++j) {
+      const double lo = box_[w_vars_[j]].lo_down(), hi = box_[w_vars_[j]].hi_up();
+      if (hi > lo) out.face = std::min(out.face, std::min(out.w[j] - lo, hi - out.w[j]) / (hi - lo));
     }
-    if (best.margin > 0) found.push_back(best);
+  }
+  for (int j = 0; j < n; ++j) pt_[w_vars_[j]] = box_[w_vars_[j]];
+  return ok;
+}
+
+// The depth of a sample in the piece of class cls: the least of the factors' signed margins
+// and the distance to the faces of W; a star centre deep inside has the best chance.
+double ClassPointSearch::margin(const Sample& s, uint32_t cls) const {
+  double m = s.face;
+  for (size_t i = 0; i < s.g.size(); ++i) m = std::min(m, (cls >> i) & 1 ? s.g[i] : -s.g[i]);
+  return m;
+}
+
+PointVerdict ClassPointSearch::find(uint32_t cls, HsWorkspace& ws, ClassPoint& out) {
+  const int n = ev_.n();
+  std::vector<const Sample*> found;
+  const Sample* best = nullptr;
+  for (const Sample& s : grid_) {
+    if (margin(s, cls) > 0) found.push_back(&s);
+    if (!best || margin(s, cls) > margin(*best, cls)) best = &s;
   }
   std::sort(found.begin(), found.end(),
-            [](const Candidate& a, const Candidate& b) { return a.margin > b.margin; });
+            [&](const Sample* a, const Sample* b) { return margin(*a, cls) > margin(*b, cls); });
   if (found.size() > 4) found.resize(4);
-  ExistenceProof proof;
-  for (const Candidate& c : found) {
-    Box z = box;
-    for (int k = 0; k < n; ++k) z[u[k]].set_point(c.u[k]);
-    for (int j = 0; j < n; ++j) {
-      const double r = 1e-12 * (1 + std::fabs(c.w[j]));
-      z[w[j]].set_hull(c.w[j] - r, c.w[j] + r);
-    }
-    if (prove_existence(ev, z, 1.01, 12, proof, ws, false, nullptr, &w) != Existence::Proved)
-      continue;
-    bool inside = true;
-    for (int j = 0; j < n; ++j) {
-      if (!box[w[j]].contains(proof.image[j])) inside = false;
-      z[w[j]] = proof.image[j];
-    }
-    if (!inside || !fg.values(ev, z, values)) continue;
-    bool signs = true;
-    for (int i = 0; i < p; ++i) {
-      const bool positive = (cls >> i) & 1;
-      if (!(positive ? values[i].certainly_pos() : values[i].certainly_neg())) signs = false;
-    }
-    if (!signs) continue;
-    out.u_vars = u;
-    out.w_vars = w;
-    out.u = c.u;
-    out.w = proof.image;
-    return PointVerdict::Found;
+  for (const Sample* s : found)
+    if (prove(*s, cls, ws, out)) return PointVerdict::Found;
+  if (!found.empty() || !best) return PointVerdict::NotFound;
+  // A piece that is a sliver (the class cut off by a singular surface near a corner of the
+  // box) holds no grid point: climb from the deepest one, coordinate by coordinate, with
+  // halving steps, towards more depth (Newton from the last w: a short continuation).
+  Sample top = *best;
+  double top_margin = margin(top, cls);
+  std::vector<double> step(n);
+  for (int k = 0; k < n; ++k) step[k] = 0.25 * box_[u_vars_[k]].width_up() / per_axis_;
+  for (int it = 0; it < 48; ++it) {
+    bool moved = false;
+    for (int k = 0; k < n; ++k)
+      for (double dir : {-1.0, 1.0}) {
+        std::vector<double> u = top.u;
+        const Interval& axis = box_[u_vars_[k]];
+        u[k] = std::min(axis.hi_up(), std::max(axis.lo_down(), u[k] + dir * step[k]));
+        Sample c;
+        if (u[k] == top.u[k] || !sample(std::move(u), &top.w, c)) continue;
+        const double cm = margin(c, cls);
+        if (cm > top_margin) top = std::move(c), top_margin = cm, moved = true;
+      }
+    if (!moved)
+      for (double& h : step) h *= 0.5;
+    if (top_margin > 0 && !moved) break;
   }
+  if (top_margin > 0 && prove(top, cls, ws, out)) return PointVerdict::Found;
   return PointVerdict::NotFound;
+}
+
+// Iteration (9) at the u-point, its enclosure inside the box's W, every factor of sign s_i.
+bool ClassPointSearch::prove(const Sample& s, uint32_t cls, HsWorkspace& ws, ClassPoint& out) {
+  const int n = ev_.n(), p = fg_.factors();
+  Box z = box_;
+  for (int k = 0; k < n; ++k) z[u_vars_[k]].set_point(s.u[k]);
+  for (int j = 0; j < n; ++j) {
+    const double r = 1e-12 * (1 + std::fabs(s.w[j]));
+    z[w_vars_[j]].set_hull(s.w[j] - r, s.w[j] + r);
+  }
+  ExistenceProof proof;
+  if (prove_existence(ev_, z, 1.01, 12, proof, ws, false, nullptr, &w_vars_) != Existence::Proved)
+    return false;
+  for (int j = 0; j < n; ++j) {
+    if (!box_[w_vars_[j]].contains(proof.image[j])) return false;
+    z[w_vars_[j]] = proof.image[j];
+  }
+  if (!fg_.values(ev_, z, values_)) return false;
+  for (int i = 0; i < p; ++i) {
+    const bool positive = (cls >> i) & 1;
+    if (!(positive ? values_[i].certainly_pos() : values_[i].certainly_neg())) return false;
+  }
+  out.u_vars = u_vars_;
+  out.w_vars = w_vars_;
+  out.u = s.u;
+  out.w = proof.image;
+  return true;
+}
+
+PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
+                              const std::vector<int>& w, uint32_t cls, HsWorkspace& ws,
+                              ClassPoint& out, int per_axis) {
+  return ClassPointSearch(ev, fg, box, w, per_axis).find(cls, ws, out);
 }
 
 }  // namespace aspects

@@ -22,8 +22,39 @@ struct ClassPoint {
 
 enum class PointVerdict : uint8_t { Found, NotFound };
 
-// w_vars: the chart's w (the unknowns). cls: bit i set when factor i is positive.
-// per_axis: grid points per u-axis.
+// The search for the points of every class in one box and chart: the grid's u-points and
+// their w (Newton in doubles) do not depend on the class, so they are computed once and
+// each class is then a choice among them (then a climb, then the proof).
+class ClassPointSearch {
+ public:
+  // w_vars: the chart's w (the unknowns). per_axis: grid points per u-axis.
+  ClassPointSearch(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
+                   const std::vector<int>& w_vars, int per_axis);
+  // cls: bit i set when factor i is positive.
+  PointVerdict find(uint32_t cls, HsWorkspace& ws, ClassPoint& out);
+
+ private:
+  struct Sample {
+    std::vector<double> u, w;
+    std::vector<double> g;  // the factors at (u, w), each over its scale on the box
+    double face = 0;        // the least distance to a face of W, over W's width
+  };
+  bool sample(std::vector<double> u, const std::vector<double>* start, Sample& out);
+  double margin(const Sample& s, uint32_t cls) const;
+  bool prove(const Sample& s, uint32_t cls, HsWorkspace& ws, ClassPoint& out);
+
+  ModelEvaluator& ev_;
+  const FactorGradients& fg_;
+  const Box& box_;
+  std::vector<int> u_vars_, w_vars_;
+  int per_axis_;
+  std::vector<double> scale_;  // per factor: its magnitude over the box (1 if unknown)
+  std::vector<Sample> grid_;
+  Box pt_;
+  std::vector<Interval> values_;
+};
+
+// One class: ClassPointSearch(...).find(cls, ...).
 PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
                               const std::vector<int>& w_vars, uint32_t cls, HsWorkspace& ws,
                               ClassPoint& out, int per_axis = 5);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -310,7 +311,7 @@ class Counter {
       for (int w : chart.w) chart.w_range.push_back(c.box[w]);
       cv = ChartVerdict::Proved;
     } else {
-      for (const std::vector<int>& w : chart_candidates(ev_, c.box)) {
+      for (const std::vector<int>& w : chart_candidates(ev_, c.box, domain_width_)) {
         cv = prove_chart(ev_, c.box, w, ws_, chart);
         if (cv != ChartVerdict::NotProved) break;
       }
@@ -358,10 +359,10 @@ class Counter {
     if (c.solution) {
       // The graph is connected and every factor nonzero on it (P2): it lies in one class,
       // the class of any of its points.
+      ClassPointSearch points(ev_, fg_, c.box, chart.w, 1);
       for (uint32_t s : classes) {
         ClassPoint pt;
-        if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, pt, 1) != PointVerdict::Found)
-          continue;
+        if (points.find(s, ws_, pt) != PointVerdict::Found) continue;
         for (uint32_t t : classes)
           c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
                               OpenReason::NoPoint});
@@ -370,13 +371,15 @@ class Counter {
       for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
       return;
     }
+    std::unique_ptr<ClassPointSearch> points;  // made when a class needs it
     for (uint32_t s : classes) {
       if (zdefined && class_empty(zv, s)) {
         c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
         continue;
       }
       ClassPoint centre;
-      if (find_class_point(ev_, fg_, c.box, chart.w, s, ws_, centre, 3) != PointVerdict::Found) {
+      if (!points) points = std::make_unique<ClassPointSearch>(ev_, fg_, c.box, chart.w, 3);
+      if (points->find(s, ws_, centre) != PointVerdict::Found) {
         const bool empty = prove_piece_empty(ev_, fg_, chart, z, s, ws_) == EmptyVerdict::Empty;
         c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
                             OpenReason::NoPoint});
@@ -473,7 +476,7 @@ class Counter {
     for (const std::vector<int>& k : e.shifts) {
       if (!inner_meet(cells_[e.a].box, cells_[e.b].box, k, face)) continue;
       // A face flat in a variable is reached in a chart where that variable is u.
-      std::vector<std::vector<int>> charts = chart_candidates(ev_, face);
+      std::vector<std::vector<int>> charts = chart_candidates(ev_, face, domain_width_);
       std::stable_partition(charts.begin(), charts.end(), [&](const std::vector<int>& w) {
         for (int v : w)
           if (face[v].lo_down() == face[v].hi_up()) return false;
@@ -504,7 +507,7 @@ class Counter {
   bool bridged(const Box& hull, uint32_t cls) {
     Chart chart;
     std::vector<Interval> values;
-    for (const std::vector<int>& w : chart_candidates(ev_, hull)) {
+    for (const std::vector<int>& w : chart_candidates(ev_, hull, domain_width_)) {
       if (prove_chart(ev_, hull, w, ws_, chart) != ChartVerdict::Proved) continue;
       Box z = hull;
       bool in_domain = true;
