@@ -166,6 +166,10 @@ void add_count(CLI::App& app, Commands& c) {
                     "do not bisect boxes narrower than this fraction of the domain")
       ->check(kFiniteNumber)
       ->default_val(1e-4);
+  count->add_option("--rounds", co.rounds,
+                    "stop after this many rounds of refinement (the bounds reached hold)")
+      ->check(CLI::Range(1, 1000000))
+      ->default_val(200);
   count->add_option("--time-limit", co.time_limit,
                     "stop after SECONDS and print the bounds reached (exit 3)")
       ->check(kFiniteNumber);

@@ -61,6 +61,7 @@ int run_count(const CountOptions& o) {
   CountConfig cfg;
   cfg.eps = o.eps;
   cfg.min_width = o.min_width;
+  cfg.max_rounds = o.rounds;
   cfg.threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   cfg.stop = &stop;
   if (o.progress || isatty(2)) cfg.progress = progress_line;

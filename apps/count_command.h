@@ -10,6 +10,7 @@ struct CountOptions {
   std::string model_path;  // empty: the embedded RRRRR
   double eps = 0.5;
   double min_width = 1e-4;
+  int rounds = 200;
   double time_limit = 0;
   int threads = 0;
   bool json = false;
