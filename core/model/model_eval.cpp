@@ -3,8 +3,12 @@
 namespace aspects {
 
 ModelEvaluator::ModelEvaluator(const Model& m, Arithmetic arithmetic)
-    : m_(m), ev_(m.dag, arithmetic), zero_(0.0) {
+    : m_(m), ev_(m.dag, arithmetic), point_(m.dag), zero_(0.0) {
   prog_f_ = m.dag.closure(m.equations);
+  std::vector<int> all = m.equations;
+  all.insert(all.end(), m.fx.begin(), m.fx.end());
+  all.insert(all.end(), m.fq.begin(), m.fq.end());
+  prog_point_ = m.dag.closure(all);
   prog_fq_ = m.dag.closure(m.fq);
   prog_fx_ = m.dag.closure(m.fx);
   for (int e : m.equations) prog_eq_.push_back(m.dag.closure({e}));
@@ -53,6 +57,18 @@ EvalStatus ModelEvaluator::jacobian_x(const Box& box, IMatrix& J) {
 }
 EvalStatus ModelEvaluator::jacobian_x(const Box& box, DMatrix& J) {
   return eval_matrix(ev_, prog_fx_, m_.fx, n(), box, J);
+}
+
+bool ModelEvaluator::at_point(const double* vars, std::vector<double>& f,
+                              std::vector<double>& fx, std::vector<double>& fq) {
+  if (!point_.run(prog_point_, vars)) return false;
+  f.resize(m_.equations.size());
+  for (size_t i = 0; i < f.size(); ++i) f[i] = point_.value(m_.equations[i]);
+  fx.resize(m_.fx.size());
+  for (size_t i = 0; i < fx.size(); ++i) fx[i] = point_.value(m_.fx[i]);
+  fq.resize(m_.fq.size());
+  for (size_t i = 0; i < fq.size(); ++i) fq[i] = point_.value(m_.fq[i]);
+  return true;
 }
 
 bool ModelEvaluator::hc4(int i, Box& box) {

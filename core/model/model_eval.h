@@ -6,6 +6,7 @@
 
 #include "model/eval.h"
 #include "model/model.h"
+#include "model/point_eval.h"
 
 namespace aspects {
 
@@ -34,13 +35,19 @@ class ModelEvaluator {
   }
   const Interval& value(int node) const { return ev_.value(node); }
 
+  // f, Fx and Fq (row major) at a point, in doubles rounded to nearest: for choices only
+  // (model/point_eval.h). False where a node is undefined or not finite.
+  bool at_point(const double* vars, std::vector<double>& f, std::vector<double>& fx,
+                std::vector<double>& fq);
+
   // HC4-Revise on equation i; false when the box holds no solution of it.
   bool hc4(int i, Box& box);
 
  private:
   const Model& m_;
   Evaluator ev_;
-  std::vector<int> prog_f_, prog_fq_, prog_fx_;
+  std::vector<int> prog_f_, prog_fq_, prog_fx_, prog_point_;
+  PointEvaluator point_;
   std::vector<std::vector<int>> prog_eq_;
   Interval zero_;
 };

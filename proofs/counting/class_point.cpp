@@ -13,43 +13,43 @@ namespace {
 // the middle of the w-part: a choice. False when it fails or ends outside the w-part.
 bool newton_w(ModelEvaluator& ev, Box& pt, const Box& box, const std::vector<int>& w,
               const std::vector<double>* start, std::vector<double>& wpt) {
-  const int n = ev.n();
+  const int n = ev.n(), nv = int(pt.size());
   const Model& m = ev.model();
-  for (int j = 0; j < n; ++j) pt[w[j]].set_point(start ? (*start)[j] : box[w[j]].mid());
-  std::vector<DInterval> f;
-  DMatrix Jx, Jq, Jw;
+  // Each w's column in Fx or Fq, row major there.
+  std::vector<std::pair<bool, int>> col(n);
+  for (int j = 0; j < n; ++j) {
+    const auto p = std::find(m.pose.begin(), m.pose.end(), w[j]);
+    col[j] = p != m.pose.end()
+                 ? std::make_pair(true, int(p - m.pose.begin()))
+                 : std::make_pair(false, int(std::find(m.command.begin(), m.command.end(), w[j]) -
+                                             m.command.begin()));
+  }
+  std::vector<double> v(nv), f, fx, fq;
+  for (int i = 0; i < nv; ++i) v[i] = pt[i].mid();
+  for (int j = 0; j < n; ++j) v[w[j]] = start ? (*start)[j] : box[w[j]].mid();
   Eigen::MatrixXd A(n, n);
   Eigen::VectorXd b(n);
-  bool ok = true;
-  for (int it = 0; it < 30 && ok; ++it) {
-    if (ev.equations(pt, f) != EvalStatus::Defined || ev.jacobian_x(pt, Jx) != EvalStatus::Defined ||
-        ev.jacobian_q(pt, Jq) != EvalStatus::Defined) {
-      ok = false;
-      break;
+  for (int it = 0; it < 30; ++it) {
+    if (!ev.at_point(v.data(), f, fx, fq)) return false;
+    for (int i = 0; i < n; ++i) {
+      b(i) = f[i];
+      for (int j = 0; j < n; ++j) A(i, j) = (col[j].first ? fx : fq)[i * n + col[j].second];
     }
-    for (int i = 0; i < n; ++i) b(i) = 0.5 * (f[i].lo + f[i].hi);
-    jacobian_columns(m, Jx, Jq, w, Jw);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) A(i, j) = 0.5 * (Jw(i, j).lo + Jw(i, j).hi);
     const Eigen::VectorXd dx = A.fullPivLu().solve(b);
-    if (!dx.allFinite()) {
-      ok = false;
-      break;
-    }
+    if (!dx.allFinite()) return false;
     double step = 0;
     for (int j = 0; j < n; ++j) {
-      const double x = pt[w[j]].mid() - dx(j);
-      pt[w[j]].set_point(x);
-      step = std::max(step, std::fabs(dx(j)) / (1 + std::fabs(x)));
+      v[w[j]] -= dx(j);
+      step = std::max(step, std::fabs(dx(j)) / (1 + std::fabs(v[w[j]])));
     }
     if (step < 1e-15) break;
   }
   wpt.resize(n);
-  for (int j = 0; j < n && ok; ++j) {
-    wpt[j] = pt[w[j]].mid();
-    ok = wpt[j] >= box[w[j]].lo_down() && wpt[j] <= box[w[j]].hi_up();
+  for (int j = 0; j < n; ++j) {
+    wpt[j] = v[w[j]];
+    if (!(wpt[j] >= box[w[j]].lo_down() && wpt[j] <= box[w[j]].hi_up())) return false;
   }
-  return ok;
+  return true;
 }
 
 }  // namespace
