@@ -634,6 +634,10 @@ class Counter {
       if (hc[x] == hc[y]) continue;
       const Adj& e = adj_[r.adj];
       ++out.open_by_reason[int(OpenReason::Adjacency)];
+      // An end not proved connected is refined for itself, and the adjacency decided on its
+      // halves: the other box need not be cut for it.
+      if (g.piece_state(x) != PieceState::Connected || g.piece_state(y) != PieceState::Connected)
+        continue;
       if (!mark[e.a]) note(OpenReason::Adjacency, e.classes[r.klass].cls, e.a);
       mark[e.a] = mark[e.b] = 1;
     }
