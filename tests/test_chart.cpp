@@ -45,3 +45,18 @@ TEST(Chart, NearASerialSingularityAMixedChartIsTried) {
   EXPECT_TRUE(chart.w_range[0].contains(Interval(-2.8)));
   EXPECT_TRUE(chart.w_range[1].contains(Interval(2.7)));
 }
+
+// A box of a refined RRRRR cover, 0.008 wide in the pose, whose q1 the contraction left 0.4
+// wide (x1 sin q1 − x2 cos q1 is evaluated as a difference of products that cancel): no
+// chart holds, and cutting the pose again leaves q1 as wide. The cut is q1.
+TEST(Chart, AWideCommandTheContractionLeftIsCut) {
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  ModelEvaluator ev(m);
+  HsWorkspace ws;
+  const Box b = box_of({2.97266, -3.06082, -0.441412, 2.11117}, {2.98096, -3.05303, -0.0449556, 2.16794});
+  const std::vector<double> scale{40, 40, 2 * M_PI, 2 * M_PI};
+  Chart chart;
+  for (const std::vector<int>& w : chart_candidates(ev, b, scale, 6))
+    EXPECT_NE(prove_chart(ev, b, w, ws, chart), ChartVerdict::Proved);
+  EXPECT_EQ(chart_split_variable(ev, b, scale), 2);
+}

@@ -35,8 +35,8 @@ bool middle_jacobian(ModelEvaluator& ev, const Box& box, Eigen::MatrixXd& J) {
 
 struct ChartGuess {
   std::vector<int> w;
-  double size;  // of U × r, each width over its scale
-  int cut;      // the u adding most to it
+  double size;  // of U × (W ∪ r), each width over its scale
+  int cut;      // where to bisect when no chart holds
 };
 
 // Every chart whose ∂_w f is regular at the middle, smallest predicted box first.
@@ -60,12 +60,16 @@ std::vector<ChartGuess> rank_charts(ModelEvaluator& ev, const Box& box,
     if (!lu.isInvertible()) continue;
     const Eigen::MatrixXd X = lu.solve(Ju);
     if (!X.allFinite()) continue;
+    // The proof works on U × (W ∪ r): a w-part much wider than the graph's range r is cut
+    // (the halves then contract around the graph), else the u_k that adds most to r.
     std::vector<double> share(n, 0);
     g.size = 0;
     for (int k = 0; k < n; ++k) {
       share[k] = box[u[k]].width_up() / scale[u[k]];
       g.size = std::max(g.size, share[k]);
     }
+    double widest_w = 0;
+    int wide_w = -1;
     for (int j = 0; j < n; ++j) {
       double r = 0;
       for (int k = 0; k < n; ++k) {
@@ -73,10 +77,13 @@ std::vector<ChartGuess> rank_charts(ModelEvaluator& ev, const Box& box,
         r += c;
         share[k] = std::max(share[k], c);
       }
-      g.size = std::max(g.size, r);
+      const double wj = box[g.w[j]].width_up() / scale[g.w[j]];
+      g.size = std::max(g.size, std::max(r, wj));
+      if (wj > 2 * r && wj > widest_w) widest_w = wj, wide_w = g.w[j];
     }
     if (!std::isfinite(g.size)) continue;
-    g.cut = u[std::max_element(share.begin(), share.end()) - share.begin()];
+    const int k = int(std::max_element(share.begin(), share.end()) - share.begin());
+    g.cut = wide_w >= 0 && widest_w > share[k] ? wide_w : u[k];
     out.push_back(std::move(g));
   } while (std::next_permutation(pick.begin(), pick.end()));
   std::stable_sort(out.begin(), out.end(),

@@ -41,10 +41,12 @@ std::vector<std::vector<int>> chart_candidates(ModelEvaluator& ev, const Box& bo
 
 // Where to cut a box on which no chart was proved (a choice in doubles, at the box's
 // middle): for each candidate chart, the first-order range of w over U is
-// r_j = Σ_k |X_jk|·|U_k| with X = (∂_w f)^{-1} ∂_u f; the chart whose box U × r is smallest
-// (each width over `scale`, the variable's domain width) is the likeliest to be proved, and
-// the u_k that adds most to it is cut. Cutting a w instead would leave U, and the graph's
-// range over it, as wide as before. -1 when no candidate's ∂_w f is regular at the middle.
+// r_j = Σ_k |X_jk|·|U_k| with X = (∂_w f)^{-1} ∂_u f; the proof works on U × (W ∪ r), so the
+// chart whose such box is smallest (each width over `scale`, the variable's domain width) is
+// the likeliest to be proved. Its widest w_j is cut when W_j is over twice r_j (a w-part the
+// contraction left wide: its interval Jacobian loses the cancellations, and the halves
+// contract around the graph), else the u_k that adds most to it. -1 when no candidate's
+// ∂_w f is regular at the middle.
 int chart_split_variable(ModelEvaluator& ev, const Box& box, const std::vector<double>& scale);
 
 ChartVerdict prove_chart(ModelEvaluator& ev, const Box& box, const std::vector<int>& w,
