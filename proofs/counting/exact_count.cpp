@@ -62,6 +62,9 @@ struct Cell {
   std::vector<int> split_in;  // empty, or the chart's u, to bisect
   std::vector<PieceRec> pieces;
   int32_t node = -1;           // its leaf in the refinement tree
+  // The variable whose bisection made it (-1: a box of the first cover). It does not grow
+  // back across that cut: both halves of a w-part would grow to the same range.
+  int8_t cut_var = -1;
 };
 
 struct ClassEdge {
@@ -420,6 +423,7 @@ class Counter {
     if (!c.solution && (one_class || small_growth(c.box, chart))) {
       for (int j = 0; j < n; ++j) {
         const int v = chart.w[j];
+        if (v == c.cut_var) continue;
         double lo = chart.w_range[j].lo_down(), hi = chart.w_range[j].hi_up();
         if (!periodic_[v]) {
           lo = std::max(lo, m_.vars[v].domain.lo_down());
@@ -678,6 +682,7 @@ class Counter {
     for (int half = 0; half < 2; ++half) {
       Cell c;
       c.box = box;
+      c.cut_var = int8_t(var);
       if (half == 0)
         c.box[var].set_hull(box[var].lo_down(), mid);
       else
