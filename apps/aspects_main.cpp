@@ -7,21 +7,21 @@
 #include <memory>
 
 #include "aspects_version.h"
-#include "checkpoint.h"
 #include "cli_usage.h"
 #include "count_command.h"
 #include "figure_cli.h"
 #include "model/model.h"
 #include "model/model_info.h"
 #include "mpi_launcher.h"
-#include "number_text.h"
 #include "path_command.h"
 #include "query_command.h"
-#include "result_index.h"
-#include "solve_command.h"
+#include "results/number_text.h"
+#include "results/result_index.h"
+#include "run/checkpoint.h"
+#include "run/solve_run.h"
 #include "verify_command.h"
 #if ASPECTS_MPI
-#include "mpi_solve.h"
+#include "distribution/mpi_solve.h"
 #endif
 
 using namespace aspects;
@@ -45,7 +45,7 @@ struct Commands {
   VerifyOptions verify_options;
 };
 
-// The numeric options are read as a pose's numbers are (apps/number_text.h): a subnormal is
+// The numeric options are read as a pose's numbers are (results/number_text.h): a subnormal is
 // kept; inf, nan and overflow are refused, naming the option (CLI11 prefixes its name).
 const CLI::Validator kFiniteNumber(
     [](std::string& text) {
