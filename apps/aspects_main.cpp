@@ -7,21 +7,21 @@
 #include <memory>
 
 #include "aspects_version.h"
-#include "checkpoint.h"
 #include "cli_usage.h"
 #include "count_command.h"
 #include "figure_cli.h"
 #include "model/model.h"
 #include "model/model_info.h"
 #include "mpi_launcher.h"
-#include "number_text.h"
 #include "path_command.h"
 #include "query_command.h"
-#include "result_index.h"
+#include "results/result_index.h"
+#include "run/checkpoint.h"
+#include "run/solve_run.h"
 #include "solve_command.h"
 #include "verify_command.h"
 #if ASPECTS_MPI
-#include "mpi_solve.h"
+#include "distribution/mpi_solve.h"
 #endif
 
 using namespace aspects;
@@ -31,13 +31,12 @@ namespace {
 // The subcommands as parsed: each command's options, and which one was chosen.
 struct Commands {
   CLI::App* info = nullptr;
-  CLI::App* solve = nullptr;
   CLI::App* query = nullptr;
   CLI::App* path = nullptr;
   CLI::App* count = nullptr;
   CLI::App* verify = nullptr;
   std::string info_model;
-  SolveOptions solve_options;
+  SolveCommand solve;
   QueryOptions query_options;
   PathOptions path_options;
   FigureCommands figures;  // plot, view, export
@@ -45,82 +44,10 @@ struct Commands {
   VerifyOptions verify_options;
 };
 
-// The numeric options are read as a pose's numbers are (apps/number_text.h): a subnormal is
-// kept; inf, nan and overflow are refused, naming the option (CLI11 prefixes its name).
-const CLI::Validator kFiniteNumber(
-    [](std::string& text) {
-      double x = 0;
-      return number_problem(parse_number(text, x), text);
-    },
-    "");
-
 void add_info(CLI::App& app, Commands& c) {
   c.info = app.add_subcommand("info",
                               "Print a robot model: variables, equations, Jacobian patterns");
   c.info->add_option("MODEL", c.info_model, "robot model file (.robot)")->required();
-}
-
-void add_solve(CLI::App& app, Commands& c) {
-  SolveOptions& so = c.solve_options;
-  auto* solve = c.solve =
-      app.add_subcommand("solve", "Compute certified CSNCs and the lower bound on aspects");
-  solve->add_option("MODEL", so.model_path, "robot model file; default: the embedded RRRRR five-bar");
-  solve->add_option("-e,--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1)
-      ->check(kFiniteNumber);
-  solve->add_option("--prec", so.prec, "MPFI precision in bits (>= 24)")->default_val(53);
-  solve->add_option("--tau", so.tau, "inflation factor of the Hansen-Sengupta iteration (>= 1)")->default_val(1.01)
-      ->check(kFiniteNumber);
-  solve->add_option("-o,--out", so.out_dir, "write summary.json, boxes.csv and aspects.cert here");
-  solve->add_option("-j,--threads", so.threads, "worker threads (0: one per core); results do not depend on it")
-      ->default_val(0);
-  solve->add_flag("--progress", so.progress, "progress on stderr even when it is not a terminal");
-  auto* no_cert = solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
-  solve->add_flag("--compress-cert", so.compress_cert,
-                  "write the certificate compressed by zstd, as aspects.cert.zst (check_cert "
-                  "reads it as it reads the text; about 3x smaller)")
-      ->excludes(no_cert);
-  solve->add_option("--cert-format", so.cert_format,
-                    "certificate format: 2 (text) or 3 (the search tree, links and CSNCs in "
-                    "binary, 2-8x smaller after compression; ends moved onto the grids it "
-                    "codes compactly, so the boxes differ slightly from format 2's)")
-      ->check(CLI::IsMember({2, 3}))
-      ->default_val(2)
-      ->excludes(no_cert);
-  solve->add_flag("--all-links", so.all_links,
-                  "prove every link between neighbouring solution boxes (default: only those "
-                  "that join two components; the same CSNCs)");
-  solve->add_flag("--quiet", so.quiet, "print no summary");
-  solve->add_flag("--mpfi-only", so.mpfi_only,
-                  "compute every interval operation with MPFI, also at 53 bits where doubles "
-                  "give the same ends faster (a cross-check: the same certificate)");
-  solve->add_option("--bisect", so.bisect,
-                    "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose "
-                    "where it blocked the proof, else round robin); default: the model's "
-                    "`bisect` statement, else round-robin")
-      ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}));
-  solve->add_option("--time-limit", so.time_limit,
-                    "stop the search after SECONDS and write a partial result (exit 3)")
-      ->check(kFiniteNumber);
-  solve->add_option("--max-boxes", so.max_boxes,
-                    "stop the search after N processed boxes and write a partial result (exit 3; "
-                    "not with mpirun -n P, P > 1)");
-  solve->add_option("--memory-limit", so.memory_limit,
-                    "stop the search before the process (under mpirun: rank 0) needs more than "
-                    "GiB of memory (exit 3)")
-      ->check(kFiniteNumber);
-  solve->add_option("--checkpoint", so.checkpoint,
-                    "every SECONDS and when stopped, save a resumable state in the --out "
-                    "directory (default with --out: 60, and when stopped; 0: none)")
-      ->check(kFiniteNumber);
-  solve->add_option("--resume", so.resume_dir,
-                    "continue the stopped run of DIR from its checkpoint (same outputs as an "
-                    "uninterrupted run)");
-  solve->add_option("--subtree-stats", so.subtree_stats,
-                    "write each part of the search's cost to FILE (CSV: boxes, CPU and wall "
-                    "seconds, message bytes), for the scaling study; the result is unchanged");
-  solve->add_option("--cut-depth", so.cut_depth,
-                    "cut the search tree into subtrees at this depth (1-16; default 8, in an "
-                    "MPI job deep enough for 256 subtrees a thread); the result is unchanged");
 }
 
 void add_query(CLI::App& app, Commands& c) {
@@ -192,27 +119,19 @@ void add_verify(CLI::App& app, Commands& c) {
   verify->add_flag("--json", vo.json, "print one JSON object");
 }
 
-// The options of `solve` given on the command line: a resumed run refuses those that
-// differ from its checkpoint, and the model's `bisect` statement yields to --bisect.
-void record_given_options(Commands& c) {
-  for (const char* name : {"MODEL", "--eps", "--prec", "--tau", "--bisect", "--all-links",
-                           "--no-cert", "--cert-format", "--out", "--checkpoint"})
-    if (c.solve->count(name) > 0) c.solve_options.given.push_back(name);
-}
-
 int run_command(Commands& c) {
   if (*c.info) {
     Model m = load_model(c.info_model);
     print_model_info(m, std::cout);
     return 0;
   }
-  record_given_options(c);
+  record_given_options(c.solve);
   if (*c.query) return run_query(c.query_options);
   if (*c.path) return run_path(c.path_options);
   if (figure_command_chosen(c.figures)) return run_figure_command(c.figures);
   if (*c.count) return run_count(c.count_options);
   if (*c.verify) return run_verify(c.verify_options);
-  return run_solve(c.solve_options);
+  return run_solve(c.solve.options);
 }
 
 // Runs `body`; an error is reported on stderr with its exit status.
@@ -253,8 +172,8 @@ int run_solve_in_job(Commands& c, const Launch& launch) {
     std::cerr << "aspects: " << e.what() << '\n';
     return 1;
   }
-  record_given_options(c);
-  const int status = run_reporting_errors([&] { return run_solve_mpi(c.solve_options, *job); });
+  record_given_options(c.solve);
+  const int status = run_reporting_errors([&] { return run_solve_mpi(c.solve.options, *job); });
   job->finish(status);
   return status;
 #else
@@ -280,7 +199,7 @@ int main(int argc, char** argv) {
 
   Commands commands;
   add_info(app, commands);
-  add_solve(app, commands);
+  add_solve_command(app, commands.solve);
   add_query(app, commands);
   add_path(app, commands);
   add_figure_commands(app, commands.figures);
@@ -297,8 +216,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return report_parse_error(app, e, argc, argv);
   }
-  commands.solve_options.program = argv[0];  // a stopped run prints the command that resumes it
+  commands.solve.options.program = argv[0];  // a stopped run prints the command that resumes it
   const Launch launch = detect_launch();
-  if (*commands.solve && launch.by_launcher) return run_solve_in_job(commands, launch);
+  if (*commands.solve.app && launch.by_launcher) return run_solve_in_job(commands, launch);
   return run_reporting_errors([&] { return run_command(commands); });
 }

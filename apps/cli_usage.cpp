@@ -3,7 +3,16 @@
 #include <algorithm>
 #include <iostream>
 
+#include "results/number_text.h"
+
 namespace aspects {
+
+const CLI::Validator kFiniteNumber(
+    [](std::string& text) {
+      double x = 0;
+      return number_problem(parse_number(text, x), text);
+    },
+    "");
 
 namespace {
 

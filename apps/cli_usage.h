@@ -1,5 +1,6 @@
-// How `aspects` reports a command line it cannot parse: which subcommand's --help to read,
-// and the subcommand or option the user probably meant.
+// How `aspects` reads its command line's numbers, and reports a command line it cannot
+// parse: which subcommand's --help to read, and the subcommand or option the user probably
+// meant.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,10 @@
 #include <vector>
 
 namespace aspects {
+
+// The numeric options are read as a pose's numbers are (results/number_text.h): a subnormal
+// is kept; inf, nan and overflow are refused, naming the option (CLI11 prefixes its name).
+extern const CLI::Validator kFiniteNumber;
 
 // The closest of `names` to `typed` when it is close enough to be a typo (a prefix of it,
 // or at most two edits away; ties: the first), else "".

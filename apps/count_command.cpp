@@ -11,8 +11,8 @@
 
 #include "counting/exact_count.h"
 #include "model/model.h"
+#include "results/usage_error.h"
 #include "search/stop_condition.h"
-#include "solve_command.h"
 
 namespace aspects {
 

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <vector>
 
-#include "number_text.h"
-#include "solve_command.h"
+#include "results/number_text.h"
+#include "results/usage_error.h"
 
 namespace aspects {
 

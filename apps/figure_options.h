@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "loaded_result.h"
+#include "results/loaded_result.h"
 
 namespace aspects {
 

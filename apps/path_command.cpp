@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "path_output.h"
-#include "path_plot.h"
-#include "pose.h"
-#include "solve_command.h"
+#include "results/path_plot.h"
+#include "results/pose.h"
+#include "results/usage_error.h"
 
 namespace aspects {
 

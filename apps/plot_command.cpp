@@ -4,9 +4,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "loaded_result.h"
-#include "plot_data.h"
-#include "solve_command.h"
+#include "results/loaded_result.h"
+#include "results/plot_data.h"
+#include "results/usage_error.h"
 
 namespace aspects {
 

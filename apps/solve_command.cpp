@@ -1,92 +1,76 @@
 #include "solve_command.h"
 
-#include <unistd.h>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
-
-#include <cstdio>
-#include <memory>
-
-#include "certificate_writer.h"
-#include "checkpoint_saver.h"
-#include "generalized_aspects.h"
-#include "search/stop_condition.h"
-#include "solve_config.h"
-#include "solve_outputs.h"
-#include "solve_progress.h"
-#include "solve_report.h"
-#include "solve_resume.h"
-#include "subtree_stats.h"
+#include "cli_usage.h"  // kFiniteNumber
 
 namespace aspects {
 
-namespace {
-
-double resident_mib() { return resident_bytes() / (1024.0 * 1024.0); }
-
-// Blocks from 1 MiB up in their own mappings, returned to the system when freed. glibc's
-// default threshold rises with every large block freed, after which the search parts'
-// arrays, freed one by one as they are merged, would stay in the heap and raise the peak.
-void return_large_blocks_to_system() {
-#ifdef __GLIBC__
-  mallopt(M_MMAP_THRESHOLD, 1 << 20);
-#endif
+void add_solve_command(CLI::App& app, SolveCommand& c) {
+  SolveOptions& so = c.options;
+  auto* solve = c.app =
+      app.add_subcommand("solve", "Compute certified CSNCs and the lower bound on aspects");
+  solve->add_option("MODEL", so.model_path, "robot model file; default: the embedded RRRRR five-bar");
+  solve->add_option("-e,--eps", so.eps, "bisection stops at box width <= EPS")->default_val(0.1)
+      ->check(kFiniteNumber);
+  solve->add_option("--prec", so.prec, "MPFI precision in bits (>= 24)")->default_val(53);
+  solve->add_option("--tau", so.tau, "inflation factor of the Hansen-Sengupta iteration (>= 1)")->default_val(1.01)
+      ->check(kFiniteNumber);
+  solve->add_option("-o,--out", so.out_dir, "write summary.json, boxes.csv and aspects.cert here");
+  solve->add_option("-j,--threads", so.threads, "worker threads (0: one per core); results do not depend on it")
+      ->default_val(0);
+  solve->add_flag("--progress", so.progress, "progress on stderr even when it is not a terminal");
+  auto* no_cert = solve->add_flag("--no-cert", so.no_cert, "do not write the certificate");
+  solve->add_flag("--compress-cert", so.compress_cert,
+                  "write the certificate compressed by zstd, as aspects.cert.zst (check_cert "
+                  "reads it as it reads the text; about 3x smaller)")
+      ->excludes(no_cert);
+  solve->add_option("--cert-format", so.cert_format,
+                    "certificate format: 2 (text) or 3 (the search tree, links and CSNCs in "
+                    "binary, 2-8x smaller after compression; ends moved onto the grids it "
+                    "codes compactly, so the boxes differ slightly from format 2's)")
+      ->check(CLI::IsMember({2, 3}))
+      ->default_val(2)
+      ->excludes(no_cert);
+  solve->add_flag("--all-links", so.all_links,
+                  "prove every link between neighbouring solution boxes (default: only those "
+                  "that join two components; the same CSNCs)");
+  solve->add_flag("--quiet", so.quiet, "print no summary");
+  solve->add_flag("--mpfi-only", so.mpfi_only,
+                  "compute every interval operation with MPFI, also at 53 bits where doubles "
+                  "give the same ends faster (a cross-check: the same certificate)");
+  solve->add_option("--bisect", so.bisect,
+                    "bisection strategy: round-robin (the paper), pose-first, or verdict (the pose "
+                    "where it blocked the proof, else round robin); default: the model's "
+                    "`bisect` statement, else round-robin")
+      ->check(CLI::IsMember({"round-robin", "pose-first", "verdict"}));
+  solve->add_option("--time-limit", so.time_limit,
+                    "stop the search after SECONDS and write a partial result (exit 3)")
+      ->check(kFiniteNumber);
+  solve->add_option("--max-boxes", so.max_boxes,
+                    "stop the search after N processed boxes and write a partial result (exit 3; "
+                    "not with mpirun -n P, P > 1)");
+  solve->add_option("--memory-limit", so.memory_limit,
+                    "stop the search before the process (under mpirun: rank 0) needs more than "
+                    "GiB of memory (exit 3)")
+      ->check(kFiniteNumber);
+  solve->add_option("--checkpoint", so.checkpoint,
+                    "every SECONDS and when stopped, save a resumable state in the --out "
+                    "directory (default with --out: 60, and when stopped; 0: none)")
+      ->check(kFiniteNumber);
+  solve->add_option("--resume", so.resume_dir,
+                    "continue the stopped run of DIR from its checkpoint (same outputs as an "
+                    "uninterrupted run)");
+  solve->add_option("--subtree-stats", so.subtree_stats,
+                    "write each part of the search's cost to FILE (CSV: boxes, CPU and wall "
+                    "seconds, message bytes), for the scaling study; the result is unchanged");
+  solve->add_option("--cut-depth", so.cut_depth,
+                    "cut the search tree into subtrees at this depth (1-16; default 8, in an "
+                    "MPI job deep enough for 256 subtrees a thread); the result is unchanged");
 }
 
-}  // namespace
-
-int run_solve(const SolveOptions& opts, SharedSearch* shared) {
-  validate_solve_options(opts);
-  return_large_blocks_to_system();
-  SolveOptions o = opts;
-  // Held to the end: another run writing the directory would mix its files with ours.
-  const std::unique_ptr<DirectoryLock> lock = shared ? std::move(shared->lock) : lock_outputs(o);
-  // Resuming: the options and the model come from the checkpoint (checked against any
-  // given again); the parts it holds are not searched again.
-  std::unique_ptr<Checkpoint> resumed = shared ? std::move(shared->resumed) : open_resumed_run(o);
-  // A single process checkpoints by default (a resumed run keeps its checkpoint's interval).
-  if (!shared && !resumed && !o.was_given("--checkpoint") && !o.out_dir.empty())
-    o.checkpoint = kDefaultCheckpointSeconds;
-  complete_options(o);
-  set_precision(o);
-  Model model = shared ? std::move(*shared->model) : solve_model(o, resumed.get());
-  if (!resumed) choose_bisect(o, model);
-
-  AspectsConfig cfg = engine_config(o);
-  if (shared) {
-    cfg.remote = shared->remote;
-    cfg.defer_depth = shared->defer_depth;
-    cfg.later_threads = shared->later_threads;
-  }
-  if (o.cut_depth != -1) cfg.defer_depth = o.cut_depth;
-  std::unique_ptr<SubtreeStats> subtree_stats;
-  if (!o.subtree_stats.empty()) {
-    subtree_stats = std::make_unique<SubtreeStats>(o.subtree_stats);
-    subtree_stats->attach(cfg);
-  }
-  StopCondition stop;
-  set_limits(o, stop);
-  cfg.stop = &stop;
-  const bool tty = isatty(STDERR_FILENO);
-  const bool show_progress = o.progress || tty;
-  SolveProgress progress(tty);
-  if (show_progress) attach_progress(progress, cfg);
-  std::unique_ptr<CertificateWriter> cert = open_outputs(o, model);
-  cfg.certificate = cert.get();
-  if (resumed) resume_search(*resumed, cert.get(), cfg);
-  CheckpointSaver checkpoints(o);
-  checkpoints.attach(o, model, cfg, cert.get());
-
-  AspectsResult r = compute_aspects(model, cfg);
-  if (subtree_stats) subtree_stats->write();
-  if (show_progress) progress.done(model, r, resident_mib());
-  if (!o.out_dir.empty()) write_solve_outputs(o, model, cert.get(), r);
-  if (!o.quiet) print_solve_report(o, model, r);
-  if (r.complete() && !o.out_dir.empty()) std::remove(checkpoints.path().c_str());  // done with it
-  return solve_exit_status(
-      r, checkpoints.last_write(),
-      resume_hint(o, checkpoints.last_write(), resumed != nullptr, checkpoints.path()));
+void record_given_options(SolveCommand& c) {
+  for (const char* name : {"MODEL", "--eps", "--prec", "--tau", "--bisect", "--all-links",
+                           "--no-cert", "--cert-format", "--out", "--checkpoint"})
+    if (c.app->count(name) > 0) c.options.given.push_back(name);
 }
 
 }  // namespace aspects

@@ -1,85 +1,24 @@
-// `aspects solve`: run the engine on a model and write its outputs.
+// `aspects solve`: its options on the command line. The run itself is the library's
+// (run/solve_plan.h resolves the options once, run/solve_run.h runs the plan and prints
+// the report).
 #pragma once
 
-#include <algorithm>
-#include <memory>
-#include <stdexcept>
-#include <string>
-#include <vector>
+#include <CLI/CLI.hpp>
 
-#include "io/directory_lock.h"
+#include "run/solve_options.h"
 
 namespace aspects {
 
-struct SolveOptions {
-  std::string model_path;  // empty: embedded default (RRRRR)
-  double eps = 0.1;
-  long prec = 53;
-  double tau = 1.01;
-  std::string out_dir;
-  int threads = 0;  // 0: one per core
-  bool progress = false;
-  bool no_cert = false;
-  bool compress_cert = false;  // aspects.cert.zst instead of aspects.cert
-  int cert_format = 2;  // 3: the compact format (certificates/compact_records.h)
-  bool all_links = false;  // prove every link, not only a spanning forest of the CSNCs
-  bool quiet = false;
-  bool mpfi_only = false;  // no double fast path at 53 bits (core/numerics/arithmetic.h)
-  std::string bisect = "round-robin";
-  // Limits of a long run; negative: none. A stopped run writes a partial
-  // result and exits with kExitStopped.
-  double time_limit = -1;    // seconds
-  long max_boxes = -1;       // boxes processed
-  double memory_limit = -1;  // GiB
-  // Checkpoints (apps/checkpoint.h): the interval in seconds (0: none; not given:
-  // kDefaultCheckpointSeconds with --out in a single process, none otherwise), and the
-  // directory of a stopped run to continue (its options come from its checkpoint).
-  double checkpoint = -1;
-  std::string resume_dir;
-  std::string program = "aspects";  // as invoked (argv[0]): for the command that resumes
-  // The scaling study (apps/subtree_stats.h): where to write each part's cost (empty:
-  // nowhere), and the depth where the tree is cut into subtrees (-1: the default, 8, or an
-  // MPI job's). Neither changes the result.
-  std::string subtree_stats;
-  int cut_depth = -1;
-  std::vector<std::string> given;  // the options given on the command line ("--eps", "MODEL")
-  bool was_given(const char* name) const {
-    return std::find(given.begin(), given.end(), name) != given.end();
-  }
+struct SolveCommand {
+  CLI::App* app = nullptr;
+  SolveOptions options;
 };
 
-// Exit status of a run stopped by a limit or a signal (its outputs are a partial result).
-constexpr int kExitStopped = 3;
+void add_solve_command(CLI::App& app, SolveCommand& c);
 
-// The checkpoint interval of a single process with --out when --checkpoint is not given:
-// a run stopped after a minute or more, or by a limit or Ctrl-C at any time, can be
-// resumed. Not in an MPI job of several processes, where a checkpoint makes every part's
-// certificate records pass through rank 0 during the search (README "Distributed runs").
-constexpr double kDefaultCheckpointSeconds = 60;
-
-// A bad option value; reported with exit code 2.
-class UsageError : public std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-class RemoteSubtrees;
-struct Model;
-struct Checkpoint;
-
-// A search shared with other processes (an MPI job's rank 0: apps/mpi_solve.*): the model
-// they agreed on, who searches the other subtrees, where the tree is cut into them (a
-// resumed state keeps its checkpoint's cut), and the checkpoint of a resumed run, already
-// read (the options given to run_solve are then its own).
-struct SharedSearch {
-  Model* model;
-  RemoteSubtrees* remote;
-  int defer_depth;
-  std::unique_ptr<Checkpoint> resumed;
-  int later_threads = 0;  // threads of the phases after the search (0: --threads)
-  // The output directory's lock, taken before its checkpoint was read (null: none).
-  std::unique_ptr<DirectoryLock> lock = nullptr;
-};
-
-int run_solve(const SolveOptions& opts, SharedSearch* shared = nullptr);
+// Records in c.options.given the options of `solve` given on the command line: a resumed
+// run refuses those that differ from its checkpoint, and the model's `bisect` statement
+// yields to --bisect.
+void record_given_options(SolveCommand& c);
 
 }  // namespace aspects

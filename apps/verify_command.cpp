@@ -13,10 +13,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "result_files.h"
-#include "result_index.h"
-#include "sha256.h"
-#include "solve_command.h"  // UsageError
+#include "results/result_files.h"
+#include "results/result_index.h"
+#include "results/sha256.h"
+#include "results/usage_error.h"  // UsageError
 
 extern char** environ;
 

@@ -2,9 +2,9 @@
 
 #include <iostream>
 
-#include "loaded_result.h"
-#include "plot_data.h"
-#include "solve_command.h"
+#include "results/loaded_result.h"
+#include "results/plot_data.h"
+#include "results/usage_error.h"
 
 namespace aspects {
 

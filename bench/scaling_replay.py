@@ -4,7 +4,7 @@ of each subtree (`aspects solve --subtree-stats FILE --cut-depth D`) for P simul
 T threads, and prints the predicted speed-up, efficiency and load balance as a markdown
 table; with --plot, a PNG.
 
-What is replayed (apps/mpi_subtrees.cpp, proofs/pipeline/search_phase.cpp):
+What is replayed (distribution/mpi_subtrees.cpp, proofs/pipeline/search_phase.cpp):
   - rank 0 searches the top of the tree alone, cut at depth d = max(8, ceil(log2(256 P T)))
     (--per-thread N for another count a thread, --old-cut for the first slice's 8 a rank,
     --deeper K levels more); its time is the measured top's (recorded at a finer cut D)
@@ -82,7 +82,7 @@ def read_rows(path):
 
 
 def cut_for(ranks, threads, a):
-    """apps/mpi_subtrees.cpp's defer_depth_for: --per-thread subtrees a thread of the job
+    """distribution/mpi_subtrees.cpp's defer_depth_for: --per-thread subtrees a thread of the job
     (256; --old-cut: 8 a rank, the first slice's rule), --deeper levels more."""
     subtrees = 8 * max(1, ranks) if a.old_cut else a.per_thread * max(1, ranks) * max(1, threads)
     return max(8, math.ceil(math.log2(subtrees))) + a.deeper

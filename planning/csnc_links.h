@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "link.h"
-#include "loaded_result.h"
+#include "results/loaded_result.h"
 
 namespace aspects {
 

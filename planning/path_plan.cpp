@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "path_shortcut.h"
-#include "pose.h"
-#include "query_command.h"
+#include "results/pose.h"
+#include "results/pose_query.h"
 #include "shortest_chain.h"
 
 namespace aspects {

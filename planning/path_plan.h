@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "loaded_result.h"
-#include "point_command.h"
+#include "results/loaded_result.h"
+#include "results/point_command.h"
 #include "straight_segment.h"
 
 namespace aspects {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <queue>
 
-#include "pose.h"
+#include "results/pose.h"
 
 namespace aspects {
 

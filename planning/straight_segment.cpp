@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "pose.h"
+#include "results/pose.h"
 
 namespace aspects {
 

@@ -46,7 +46,7 @@ class LinkRecords {
   void append_one(const LinkRecords& o, size_t i) { add(o.record(i)); }
   size_t size() const { return size_; }
   // The reads go through a cache of spilled records, one per thread: the certificate and
-  // the result index read them at once (apps/solve_outputs.cpp). A pointer returned stays
+  // the result index read them at once (run/solve_outputs.cpp). A pointer returned stays
   // valid until the same thread's next read.
   const double* witness(size_t i) const { return record(i); }
   double inflated_lo(size_t i, int j) const { return record(i)[n_ + 2 * j]; }

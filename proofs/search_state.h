@@ -2,7 +2,7 @@
 // subtrees it deferred, and the result of each subtree searched to the end. A part is
 // searched from its box alone (the steps keep no state between boxes), so a run resumed
 // from this state, searching only the unfinished subtrees again, ends with the same tree,
-// boxes and certificate as a run never stopped. apps/checkpoint.* writes and reads it.
+// boxes and certificate as a run never stopped. run/checkpoint.* writes and reads it.
 #pragma once
 
 #include <cstdint>

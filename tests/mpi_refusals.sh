@@ -15,10 +15,10 @@
 #   launcher_without_mpi  (default build) the environment of `mpirun -n 2`: exit 2, no output
 #
 # Seen failing, each once on purpose, then restored: other_model and other_binary with the
-# model's and the executable's hash left out of the comparison (apps/mpi_identity.cpp: the
+# model's and the executable's hash left out of the comparison (distribution/mpi_identity.cpp: the
 # run went ahead, exit 0); launcher_without_mpi with the launcher check removed from
 # apps/aspects_main.cpp (exit 0, outputs written); more_processes_than_work without the note
-# (apps/mpi_subtrees.cpp).
+# (distribution/mpi_subtrees.cpp).
 set -u
 case_=$1 mpirun=$2 aspects=$3 robots=$4
 work=$(mktemp -d)

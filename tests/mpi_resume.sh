@@ -12,7 +12,7 @@
 #   dead_rank  P = 3, rank 1 killed (SIGKILL) once a checkpoint is written: the job fails,
 #              no output under a final name; resumed with P = 2
 #   cut_depth  P = 40 of 1 thread (the tree cut at depth 14: 256 subtrees a thread,
-#              apps/mpi_subtrees.h) stopped by SIGTERM to rank 0: the checkpoint records
+#              distribution/mpi_subtrees.h) stopped by SIGTERM to rank 0: the checkpoint records
 #              14; one process resumes it and stops at once (--max-boxes 1): its
 #              checkpoint still says 14; resumed with P = 2
 # SOLVE_ARGS (environment): more options for the runs that start (say --cert-format 3);
@@ -22,7 +22,7 @@
 #  - a part another rank stopped counted as finished (search_with_remote,
 #    proofs/pipeline/search_phase.cpp): signal and limits, boxes.csv differs after resuming;
 #  - the resumed state's cut depth not taken from its checkpoint (resume_search,
-#    apps/solve_resume.cpp): cut_depth, the checkpoint says depth 8;
+#    run/solve_plan.cpp): cut_depth, the checkpoint says depth 8;
 #  - a killed job's rank 0, still a zombie when the resumed run starts, taken as alive
 #    (remove_stale_temporaries): dead_rank, aspects.cert.tmp.PID* left.
 set -u
@@ -70,7 +70,7 @@ stopped_by() {
   /usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["stopped_by"])' \
     "$1/summary.json"
 }
-# depth DIR: the cut depth in DIR/checkpoint's header (layout: apps/checkpoint.cpp).
+# depth DIR: the cut depth in DIR/checkpoint's header (layout: run/checkpoint.cpp).
 depth() {
   /usr/bin/python3 - "$1/checkpoint" <<'PY'
 import struct, sys

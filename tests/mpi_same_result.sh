@@ -8,7 +8,7 @@
 #
 # Seen failing, each once on purpose, then restored:
 #  - rank 0 sending the box of the subtree before the one it hands out (task_message,
-#    apps/mpi_subtrees.cpp): boxes.csv differs at P = 2 on rprpr and rrrrr;
+#    distribution/mpi_subtrees.cpp): boxes.csv differs at P = 2 on rprpr and rrrrr;
 #  - a rank searching with parent split -1 instead of the one rank 0 sent: boxes.csv differs
 #    at P = 2 on 3rrr_star only (on rprpr and rrrrr depth 8 is two whole round-robin turns of
 #    their 4 variables, so the first split of a subtree is the same either way);

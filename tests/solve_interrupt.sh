@@ -59,7 +59,7 @@ csncs=$(field "CSNCs: " | sed 's/,.*//')
 [ "$csncs" -lt "$solutions" ] || fail "once: $csncs CSNCs for $solutions solution boxes"
 grep -q "unexplored" "$work/out" || fail "once: not a partial result"
 [ -f "$d/checkpoint" ] || fail "once: no checkpoint"
-# The interval the checkpoint records (layout: apps/checkpoint.cpp): the default, 60 s.
+# The interval the checkpoint records (layout: run/checkpoint.cpp): the default, 60 s.
 interval=$(/usr/bin/python3 - "$d/checkpoint" <<'PY'
 import struct, sys
 b = open(sys.argv[1], "rb").read()

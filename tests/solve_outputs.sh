@@ -164,7 +164,7 @@ expect 1 "^aspects.cert      check_cert REJECTED: claimed lower bound 5 exceeds 
   "$aspects" verify "$out"
 grep -q "^NOT VERIFIED: check_cert did not accept the certificate$" "$out/log" || fail "verify: rejected"
 # The first solution box's signs flipped in the index (issue 50, item 5: query printed
-# them as certified): its checksum refuses it. Layout: apps/result_index.cpp.
+# them as certified): its checksum refuses it. Layout: results/result_index.cpp.
 "$aspects" solve "$model" --eps 0.1 --quiet --out "$out"
 /usr/bin/python3 - "$out/aspects.idx" <<'PY'
 import struct, sys

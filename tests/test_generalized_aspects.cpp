@@ -134,7 +134,7 @@ TEST(GeneralizedAspects, ParallelSubtreesGiveTheSequentialResult) {
   }
 }
 
-// Another process stood in for by a thread (the MPI job's ranks, apps/mpi_subtrees.*): it
+// Another process stood in for by a thread (the MPI job's ranks, distribution/mpi_subtrees.*): it
 // takes subtrees from the queue with this process's threads, searches each from its box
 // with its own model and evaluator, and hands the parts back.
 class ThreadAsRemote : public RemoteSubtrees {

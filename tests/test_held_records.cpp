@@ -1,5 +1,5 @@
 // The certificate writer's parts from elsewhere: records held by the process that searched
-// a subtree (an MPI rank: apps/mpi_held_records.h) and fetched as the certificate is written
+// a subtree (an MPI rank: distribution/mpi_held_records.h) and fetched as the certificate is written
 // give the certificate of a single process, byte for byte; a checkpoint cannot take them
 // (CertificateWriter::records refuses). Another process is stood in for by a thread, as in
 // test_generalized_aspects.cpp, so that this runs in the default build, without MPI. And

@@ -76,7 +76,7 @@ TEST(LinkRecords, SpilledRecordsComeBackExactly) {
 }
 
 // The certificate writer and the result index read the same records at once
-// (apps/solve_outputs.cpp): each thread must get its own numbers, whatever the other reads.
+// (run/solve_outputs.cpp): each thread must get its own numbers, whatever the other reads.
 TEST(LinkRecords, TwoThreadsReadAtOnce) {
   const size_t count = 3 * kPerSpill;
   const LinkRecords r = make(count);

@@ -1,5 +1,5 @@
-// `aspects query` and `aspects path` on RRRRR at ε = 0.3 (apps/query_command.*,
-// apps/path_command.*, apps/result_index.*): every command enclosure printed contains the
+// `aspects query` and `aspects path` on RRRRR at ε = 0.3 (results/pose_query.*,
+// apps/path_command.*, results/result_index.*): every command enclosure printed contains the
 // root of f(x, ·) = 0 computed independently here by Newton in MPFR at 256 bits on the
 // RRRRR equations written out by hand; a path's consecutive waypoints share a box; a path
 // across CSNCs of different determinant signs is refused; the index round-trips exactly
@@ -18,15 +18,15 @@
 #include <fstream>
 #include <iterator>
 
-#include "generalized_aspects.h"
-#include "loaded_result.h"
 #include "csnc_links.h"
+#include "generalized_aspects.h"
 #include "path_plan.h"
-#include "pose.h"
-#include "query_command.h"
-#include "result_index.h"
-#include "same_command.h"
-#include "sha256.h"
+#include "results/loaded_result.h"
+#include "results/pose.h"
+#include "results/pose_query.h"
+#include "results/result_index.h"
+#include "results/same_command.h"
+#include "results/sha256.h"
 #include "test_util.h"
 
 using namespace aspects;
@@ -196,7 +196,7 @@ TEST(QueryPath, EachSolutionOfAPoseOnSharedFacesIsListedOnce) {
   EXPECT_GT(merged, 0) << "no pose on a shared face: the test shows nothing";
 }
 
-// same_command (apps/same_command.h) on one pose of RRRRR: a command and itself shifted by a
+// same_command (results/same_command.h) on one pose of RRRRR: a command and itself shifted by a
 // whole turn are one (q1, q2 periodic); two different roots are distinct; an enclosure
 // holding two roots proves neither.
 TEST(QueryPath, SameCommandProvesOneTwoOrNeither) {

@@ -1,4 +1,4 @@
-// The part encoding of checkpoints and MPI messages (apps/search_part_codec.h): real parts
+// The part encoding of checkpoints and MPI messages (run/search_part_codec.h): real parts
 // of a stopped RPRPR search (a top with deferred leaves, finished and partial subtrees)
 // come back field for field, and damaged bytes are refused, never read as another part.
 #include <gtest/gtest.h>
@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "deep_tree.h"
+#include "distribution/mpi_message.h"
 #include "generalized_aspects.h"
 #include "model/determinant_factors.h"
-#include "mpi_message.h"
 #include "pipeline/part_merger.h"
+#include "run/search_part_codec.h"
 #include "search/stop_condition.h"
-#include "search_part_codec.h"
 
 namespace aspects {
 namespace {

@@ -155,7 +155,9 @@ int64_t parse_int(std::string_view s, long rec) {
 // [-]0x0.Fp-1022 for a subnormal one, [-]0x0p+0 for zero; F holds 1 to 13 lower-case hex
 // digits, the last not 0, and E has no leading zero. The value is then exact.
 double parse_real(std::string_view s, long rec) {
-  const auto hex = [](char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1; };
+  const auto hex = [](char c) {
+    return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+  };
   const size_t n = s.size();
   size_t i = n && s[0] == '-';
   bool ok = n >= i + 6 && s[i] == '0' && s[i + 1] == 'x' && (s[i + 2] == '0' || s[i + 2] == '1');
@@ -208,7 +210,8 @@ LineReader& LineReader::require(const std::vector<const char*>& words, size_t ex
 }
 
 void LineReader::count(size_t k) {
-  if (!binary_ && size() != k) malformed(line_, std::string(kind()) + " record: wrong number of fields");
+  if (!binary_ && size() != k)
+    malformed(line_, std::string(kind()) + " record: wrong number of fields");
 }
 
 std::string_view LineReader::word() {
@@ -347,11 +350,14 @@ void LineReader::decode(int tag) {
     return;
   }
   static const char* const kinds[] = {"X", "U", "N", "S", "K", "csnc"};
-  if (tag > 0xC5) malformed(line_, "unknown binary record (first byte " + std::to_string(tag) + ")");
+  if (tag > 0xC5)
+    malformed(line_, "unknown binary record (first byte " + std::to_string(tag) + ")");
   bin_kind_ = kinds[tag - 0xC0];
   if (tag == 0xC0) {  // X: 0 hs, 1 + 2i eq<i>, 2 + 2k c<k>
     const uint64_t h = varint();
-    word(h == 0 ? "hs" : h % 2 ? "eq" + std::to_string((h - 1) / 2) : "c" + std::to_string((h - 2) / 2));
+    word(h == 0       ? "hs"
+         : h % 2 ? "eq" + std::to_string((h - 1) / 2)
+                 : "c" + std::to_string((h - 2) / 2));
   } else if (tag <= 0xC3) {  // U, N, S: the id is the next one; the signs
     add(Field::Int, step(last_id_, 1));
     word(p_ == 0 ? "." : packed(p_));

@@ -112,8 +112,9 @@ int check_main(int argc, char** argv) {
                "3: every proof verified, but the claimed lower bound rests on a user-supplied\n"
                "   `factor` the checker cannot verify (not given --trust-factors).",
                "check_cert"};
-  app.set_version_flag("--version", std::string("check_cert ") + ASPECTS_VERSION +
-                                        (*ASPECTS_GIT_COMMIT ? " (git " ASPECTS_GIT_COMMIT ")" : ""));
+  app.set_version_flag("--version",
+                       std::string("check_cert ") + ASPECTS_VERSION +
+                           (*ASPECTS_GIT_COMMIT ? " (git " ASPECTS_GIT_COMMIT ")" : ""));
   CheckOptions o;
   bool json = false;
   std::string path;

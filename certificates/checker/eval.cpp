@@ -489,9 +489,10 @@ bool Evaluator::monotone_projection(Op op, const Ival& r, Ival& a, const Ival& f
   return true;
 }
 
-// Otherwise a ∩= ∪k (s + 2kπ) ∪ (π − s + 2kπ) with s = asin(r) ⊆ [−π/2, π/2] (sin), or
-// ∪k (±s + 2kπ) with s = acos(r) ⊆ [0, π] (cos): every preimage of r. The pieces are interval
-// enclosures, and the k range (margin 2) covers every piece that can meet a (|a| < 1e6).
+// Otherwise a ∩= ∪k (s + 2kπ) ∪ (π − s + 2kπ) with s = asin(r) ⊆ [−π/2, π/2]
+// (sin), or ∪k (±s + 2kπ) with s = acos(r) ⊆ [0, π] (cos): every preimage of r. The
+// pieces are interval enclosures, and the k range (margin 2) covers every piece that can
+// meet a (|a| < 1e6).
 bool Evaluator::project_general(Op op, const Ival& r, Ival& a) {
   if (op == Op::Sin) apply_fn(Fn::Asin, t1_, r);
   else apply_fn(Fn::Acos, t1_, r);

@@ -1,4 +1,4 @@
-// Deferred subtrees searched by other processes (an MPI job: apps/mpi_subtrees.*) beside
+// Deferred subtrees searched by other processes (an MPI job: distribution/mpi_subtrees.*) beside
 // this process's threads. Both take subtrees from one SubtreeQueue. A part comes back
 // whole, as this process would have searched it (a subtree is searched from its box
 // alone), so the merged tree, boxes and certificate do not depend on who searched what.

@@ -7,7 +7,7 @@ the package), so the command line runs it as a script:
 
     /usr/bin/python3 plotting.py DATA.json OUT
 
-where DATA.json (written by apps/plot_data.cpp) names a binary file of the boxes (every
+where DATA.json (written by results/plot_data.cpp) names a binary file of the boxes (every
 variable; an undecided box's command part is NaN: the index keeps its pose part only),
 says which figure to make ("kind": plot, view or vtk) and with which options. An
 illustration only: nothing drawn here is a claim, except the count in the title, which is
@@ -232,7 +232,7 @@ def check_dpi_size(dpi, size):
 
 def read_data(meta_path):
     """The BoxSet, the path (or None) and the figure's options (a dict: kind, out, axes,
-    csncs, largest, dpi, size, ...) of a DATA.json written by apps/plot_data.cpp."""
+    csncs, largest, dpi, size, ...) of a DATA.json written by results/plot_data.cpp."""
     with open(meta_path) as f:
         d = json.load(f)
     n, k = d["boxes"], len(d["names"])

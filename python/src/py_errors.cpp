@@ -3,8 +3,8 @@
 // ValueErrors with the command line's message.
 #include "model/model.h"
 #include "py_common.h"
-#include "result_index.h"
-#include "solve_command.h"
+#include "results/result_index.h"
+#include "results/usage_error.h"
 
 namespace aspects::py {
 

@@ -1,6 +1,6 @@
 // aspects.Result (the compiled part; python/aspects/result.py adds the rest): the boxes as
 // numpy arrays, the summary, and `query` and `path` as `aspects query|path --json` answer
-// them, through the same code (apps/query_command.h, planning/path_plan.h).
+// them, through the same code (results/pose_query.h, planning/path_plan.h).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -12,13 +12,13 @@
 
 #include "model/model_eval.h"
 #include "path_plan.h"
-#include "pose.h"
 #include "py_common.h"
-#include "query_command.h"
-#include "result_index.h"
+#include "results/pose.h"
+#include "results/pose_query.h"
+#include "results/result_index.h"
+#include "results/sha256.h"
+#include "results/usage_error.h"
 #include "search/output_boxes.h"
-#include "sha256.h"
-#include "solve_command.h"
 
 namespace aspects::py {
 

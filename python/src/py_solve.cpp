@@ -5,7 +5,7 @@
 // what was searched, the second stops them too), and the run returns a result whose
 // claims all hold (aspects.solve then raises aspects.Interrupted carrying it); it also
 // hands the search's progress to the Python callback. With `out`, the same files as
-// `aspects solve --out` are written by the same writers (apps/solve_outputs.h).
+// `aspects solve --out` are written by the same writers (run/solve_outputs.h).
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
@@ -21,12 +21,13 @@
 #include "numerics/interval.h"
 #include "py_common.h"
 #include "py_model.h"
-#include "result_index.h"
+#include "results/result_index.h"
+#include "run/solve_config.h"
+#include "run/solve_outputs.h"
+#include "run/solve_plan.h"
+#include "run/solve_progress.h"
+#include "run/summary_json.h"
 #include "search/stop_condition.h"
-#include "solve_config.h"
-#include "solve_outputs.h"
-#include "solve_progress.h"
-#include "summary_json.h"
 
 namespace aspects::py {
 
@@ -50,7 +51,9 @@ struct SolveRequest {
   std::string bisect, out;
 };
 
-SolveOptions options_of(const PyModel& pm, const SolveRequest& q) {
+// The run's plan (run/solve_plan.h), as `aspects solve` makes it, with the model's text as
+// the Python object holds it.
+SolvePlan plan_of(const PyModel& pm, const SolveRequest& q) {
   SolveOptions o;
   o.model_path = pm.file;
   o.eps = q.eps;
@@ -73,11 +76,10 @@ SolveOptions options_of(const PyModel& pm, const SolveRequest& q) {
     o.bisect = q.bisect;
     o.given.push_back("--bisect");
   }
-  validate_solve_options(o);
+  validate_solve_options(o);  // its messages first, as before this check
   if (o.compress_cert && o.no_cert)
     throw UsageError("compress_certificate needs certificate=True");
-  complete_options(o);
-  return o;
+  return plan_solve(o, pm.source, pm.file);
 }
 
 pyb::dict progress_dict(Progress& p, double seconds) {
@@ -180,10 +182,9 @@ void run_polling(const std::function<void()>& work, StopCondition& stop, Progres
 }
 
 pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::object& callback) {
-  SolveOptions o = options_of(pm, request);
-  set_precision(o);  // this thread's precision: the model's intervals are made here
-  Model model = parse_model(pm.source, pm.file);
-  choose_bisect(o, model);
+  SolvePlan plan = plan_of(pm, request);  // the output directory locked until the end
+  const SolveOptions& o = plan.options;
+  Model& model = plan.model;
   AspectsConfig cfg = engine_config(o);
   StopCondition stop;
   if (o.time_limit > 0) stop.set_time_limit(o.time_limit);
@@ -203,8 +204,6 @@ pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::obje
     progress.phases.emplace_back(phase, seconds);
     progress.changed = true;
   };
-  // Held to the end: another run writing the directory would mix its files with ours.
-  const std::unique_ptr<DirectoryLock> lock = lock_outputs(o);
   std::unique_ptr<CertificateWriter> cert = open_outputs(o, model);
   cfg.certificate = cert.get();
 
