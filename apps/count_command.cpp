@@ -4,11 +4,13 @@
 
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
+#include "count_certificate.h"
 #include "counting/exact_count.h"
 #include "model/model.h"
 #include "search/stop_condition.h"
@@ -64,12 +66,20 @@ int run_count(const CountOptions& o) {
   cfg.threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   cfg.stop = &stop;
   if (o.progress || isatty(2)) cfg.progress = progress_line;
+  std::unique_ptr<CountCertificateWriter> cert;
+  if (!o.cert.empty()) {
+    cert.reset(new CountCertificateWriter(o.cert, m, o.eps));
+    cfg.certificate = cert->first_cover();
+    cfg.first_cover_done = &CountCertificateWriter::first_cover_done;
+    cfg.first_cover_data = cert.get();
+  }
   CountResult r;
   try {
     r = count_aspects(m, cfg);
   } catch (const std::invalid_argument& e) {
     throw UsageError(m.file + ": " + e.what());
   }
+  if (cert) cert->finish(m, r);
   const CountBounds& b = r.bounds;
   const int p = int(r.factor_text.size());
   std::string line;
