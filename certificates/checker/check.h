@@ -172,6 +172,9 @@ struct Checker {
   bool well_formed(std::string_view s) const;
   void store(std::string_view s, const double* box, bool solution);
   std::string signs_proved(Prover& pr, const std::string& s, bool jac) const;
+  // A count certificate (count_check.cpp): its records after the tree, and its claims.
+  bool count = false;
+  void count_body();
   // The sections after the tree: links, CSNCs, witnesses (sections.cpp).
   std::vector<int> shifts();
   std::pair<double, double> inner(long a, long b, int v, int k);

@@ -159,6 +159,7 @@ struct Verdict {
   long assembly = 0;                      // verified V records
   long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user
   bool user_factors = false;
+  long count_cells = -1;  // a count certificate (count_check.cpp): boxes of its final cover
 };
 
 Verdict check_certificate(FILE* f, const CheckOptions& o);
@@ -361,13 +362,15 @@ class Prover {
   bool factor(const Factor& f, bool jac, Ival& out);
   // True when `box` provably holds no feasible solution of f = 0.
   bool refute();
+  // Narrows b around its feasible solutions (HC4, Hansen–Sengupta in the commands); false:
+  // b holds none.
+  bool contract(std::vector<Ival>& b);
   long refutations = 0, refute_boxes = 0;
 
  private:
   bool jacobians();
   const double* own_preconditioner(const std::vector<Ival>& J);
   bool dominant(const std::vector<Ival>& J, const double* C, const double* D);
-  bool contract(std::vector<Ival>& b);
   int hs_contract(std::vector<Ival>& b);
   bool refute_rec(std::vector<Ival>& b, int depth, int& budget);
   void product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out);
@@ -386,6 +389,10 @@ class Prover {
   std::vector<double> M_, own_, w1_, w2_;  // own_preconditioner(); contract()
   Ival t1_, t2_;
 };
+
+// An approximate inverse of the n×n matrix M (row major; M is spoilt) by Gauss–Jordan in
+// binary64 (proofs.cpp): a choice of preconditioner, never trusted. False when singular.
+bool invert(std::vector<double>& M, int n, std::vector<double>& inv);
 
 // ---- The combinatorial half of the check (bound.cpp; fast_sweep.cpp): a union-find, the
 // neighbourhood graph M of FORMAT.md ("claim lower-bound") by sort-and-sweep over the output

@@ -12,7 +12,7 @@ namespace cc {
 
 // Approximate inverse of the n×n matrix M (row major) by Gauss–Jordan with partial
 // pivoting, in double. Only a heuristic choice: its result is never trusted.
-static bool invert(std::vector<double>& M, int n, std::vector<double>& inv) {  // M is spoilt
+bool invert(std::vector<double>& M, int n, std::vector<double>& inv) {  // M is spoilt
   inv.assign(size_t(n) * n, 0.0);
   for (int i = 0; i < n; ++i) inv[i * n + i] = 1;
   for (int c = 0; c < n; ++c) {

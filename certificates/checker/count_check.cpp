@@ -1,0 +1,726 @@
+// count_check.cpp — trusted core: the records of a count certificate (FORMAT.md, "Count
+// certificates"), after its search tree: how each box of the final cover came from the
+// tree's output boxes (halves of bisections with their contractions, charts, boxes with no
+// solution), what shows each piece empty or nonempty, the adjacencies refuted, and the
+// claimed lower bound, recomputed from these alone. The proofs run in line, on the
+// checker's own evaluator (after the tree's proofs are judged).
+#include <map>
+
+#include "check.h"
+
+namespace cc {
+
+namespace {
+
+enum class Hs { Image, Empty, Failed };
+
+// A class of sign vectors: bit i set when factor i is positive.
+using Mask = uint64_t;
+constexpr int kMaxCountFactors = 6;  // 2^6 classes, one bit each in a Mask
+
+}  // namespace
+
+class CountCheck {
+ public:
+  explicit CountCheck(Checker& c) : c_(c), pr_(*c.ev), n_(c.n), nv_(c.nv) {}
+  void run();
+
+ private:
+  enum class State : uint8_t { Unmade, Pending, Live, Split, Void };
+  struct Cell {
+    State state = State::Unmade;
+    Box origin, box;             // as created; now (after its chart)
+    bool solution = false;       // an S record's output box, unchanged
+    std::vector<int> w;          // its chart (fit), for a paving
+    Box w_tilde;
+    Mask claimed = 0;            // classes with a piece record
+    Mask empty = 0, point = 0;   // verified: empty pieces, pieces holding a point of W_s
+    Mask other_class = 0;        // empty because another class holds the graph (checked last)
+  };
+
+  Checker& c_;
+  Prover pr_;
+  int n_, nv_;
+  long first_ = 0;
+  long last_id_ = -1;
+  std::vector<Cell> cells_;
+  std::map<std::pair<long, long>, Mask> refuted_;
+
+  long rec() const { return c_.rec(); }
+  [[noreturn]] void reject(const std::string& why) { c_.reject(why); }
+  void limit() { c_.ev->work_limit = c_.work_limit(); }
+
+  // ----- records
+  long cell_id(bool order = true);
+  Box reals_box(size_t k) { return c_.rd.intervals(k); }
+  std::vector<int> chart_vars();
+  Mask class_field();
+  void half();
+  void fit(bool void_only);
+  void none();
+  void split();
+  void piece();
+  void refuted();
+  void finish();
+
+  // ----- proofs
+  Hs hansen_sengupta(std::vector<Ival>& box, const std::vector<int>& w, std::vector<Ival>& y);
+  bool refute(const Box& b);
+  bool no_class(std::vector<Ival> b, Mask cls, int depth, long& budget);
+  bool factors(const std::vector<Ival>& box, std::vector<Ival>& out);
+  Mask excluded(const Box& b);
+  Mask excluded(const std::vector<Ival>& b);
+  bool point(const Cell& cell, const std::vector<int>& w, const std::vector<double>& u,
+             const Box& hint, Mask cls);
+  bool paving(const Cell& cell, Mask cls);
+  long lower_bound();
+
+  std::vector<Ival> ivals(const Box& b) const {
+    std::vector<Ival> out(b.size() / 2);
+    for (size_t v = 0; v < out.size(); ++v) out[v].set(b[2 * v], b[2 * v + 1]);
+    return out;
+  }
+};
+
+void Checker::count_body() { CountCheck(*this).run(); }
+
+// ---------------------------------------------------------------- proofs
+
+// Hansen–Sengupta with the variables w unknown: y = w̌ − GS(C·J_w(box), C·f(w̌)), C an
+// approximate inverse of the midpoint of J_w (any real matrix is sound), w̌ the binary64
+// middle of box's w. Every zero of f in box has its w in box_w ∩ y (each row intersected
+// with box_w before the next uses it); Empty when that is empty: box holds no zero. With
+// y ⊆ int box_w, each u of box's other variables has exactly one w in box_w with f = 0
+// (the parametric theorem, as for P1).
+Hs CountCheck::hansen_sengupta(std::vector<Ival>& box, const std::vector<int>& w,
+                               std::vector<Ival>& y) {
+  Evaluator& ev = *c_.ev;
+  const Model& m = c_.m;
+  const int n = n_;
+  std::vector<int> u;  // the parameters
+  for (int v = 0; v < nv_; ++v)
+    if (std::find(w.begin(), w.end(), v) == w.end()) u.push_back(v);
+  limit();
+  if (!ev.eval_ad(ev.all_eqs, box.data(), ~uint64_t(0) >> (64 - nv_))) return Hs::Failed;
+  std::vector<Ival> J(size_t(n) * n), Ju(size_t(n) * n), A(size_t(n) * n), b(n), X(n), ctr(n);
+  std::vector<Ival> f(n);
+  std::vector<double> M(size_t(n) * n), C;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      J[i * n + j] = ev.der(m.eqs[i], w[j]);
+      Ju[i * n + j] = ev.der(m.eqs[i], u[j]);
+      M[i * n + j] = 0.5 * (J[i * n + j].lo() + J[i * n + j].hi());
+    }
+  if (!invert(M, n, C)) return Hs::Failed;
+  Ival t, s;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      set_si(A[i * n + j], 0);
+      for (int k = 0; k < n; ++k) {
+        mul_d(t, J[k * n + j], C[i * n + k]);
+        add(A[i * n + j], A[i * n + j], t);
+      }
+    }
+  std::vector<Ival> pt = box;
+  for (int j = 0; j < n; ++j) {
+    X[j] = box[w[j]];
+    const double lo = X[j].lo(), hi = X[j].hi();
+    const double mid = std::min(std::max(lo + 0.5 * (hi - lo), lo), hi);
+    ctr[j].set(mid, mid);
+    pt[w[j]] = ctr[j];
+  }
+  // f(U, w̌), enclosed by the natural form met with the centred one f(ǔ, w̌) + ∂_u f(box)·(U − ǔ)
+  // (the mean value theorem on the segment from (ǔ, w̌) to (u, w̌), inside box): both
+  // enclose it, so an empty meet cannot happen but by a bug, and fails.
+  if (!ev.eval(ev.all_eqs, pt.data(), Mode::Proof)) return Hs::Failed;
+  for (int i = 0; i < n; ++i) f[i] = ev.val(m.eqs[i]);
+  std::vector<Ival> du(n);
+  for (int k = 0; k < n; ++k) {
+    const double lo = box[u[k]].lo(), hi = box[u[k]].hi();
+    const double mid = std::min(std::max(lo + 0.5 * (hi - lo), lo), hi);
+    pt[u[k]].set(mid, mid);
+    du[k].set(mid, mid);
+    sub(du[k], box[u[k]], du[k]);
+  }
+  if (!ev.eval(ev.all_eqs, pt.data(), Mode::Proof)) return Hs::Failed;
+  for (int i = 0; i < n; ++i) {
+    Ival fc = ev.val(m.eqs[i]);
+    for (int k = 0; k < n; ++k) {
+      mul(t, Ju[i * n + k], du[k]);
+      add(fc, fc, t);
+    }
+    if (!f[i].meet(fc)) return Hs::Failed;
+  }
+  for (int i = 0; i < n; ++i) {
+    set_si(b[i], 0);
+    for (int k = 0; k < n; ++k) {
+      mul_d(t, f[k], C[i * n + k]);
+      add(b[i], b[i], t);
+    }
+  }
+  y.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const Ival& aii = A[i * n + i];
+    if (aii.has_zero() || !aii.bounded()) return Hs::Failed;
+    t = b[i];
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      sub(s, X[j], ctr[j]);
+      mul(s, s, A[i * n + j]);
+      add(t, t, s);
+    }
+    div(t, t, aii);
+    sub(y[i], ctr[i], t);
+    if (!y[i].bounded() || y[i].empty()) return Hs::Failed;
+    if (!X[i].meet(y[i])) return Hs::Empty;
+  }
+  return Hs::Image;
+}
+
+bool CountCheck::refute(const Box& b) {
+  limit();
+  pr_.load(b.data());
+  return pr_.refute();
+}
+
+// No point of class s in b: b, contracted around its solutions, holds none, or a factor's
+// enclosure on what is left excludes s; else both halves of b (widest variable), to depth 10.
+bool CountCheck::no_class(std::vector<Ival> b, Mask cls, int depth, long& budget) {
+  limit();
+  if (!pr_.contract(b)) return true;
+  if ((excluded(b) >> cls) & 1) return true;
+  if (depth >= 10 || --budget < 0) return false;
+  int v = 0;
+  double best = -1;
+  for (int k = 0; k < nv_; ++k)
+    if (b[k].hi() - b[k].lo() > best) best = b[k].hi() - b[k].lo(), v = k;
+  if (!(best > 0)) return false;
+  std::vector<Ival> c = b;
+  Ival m;
+  mid(m, b[v]);
+  copy_end(b[v], Hi, m, Lo);
+  copy_end(c[v], Lo, m, Lo);
+  return no_class(std::move(b), cls, depth + 1, budget) &&
+         no_class(std::move(c), cls, depth + 1, budget);
+}
+
+// The factors' enclosures on box; false when one is not defined there.
+bool CountCheck::factors(const std::vector<Ival>& box, std::vector<Ival>& out) {
+  limit();
+  pr_.box = box;
+  out.resize(c_.p);
+  for (int i = 0; i < c_.p; ++i)
+    if (!pr_.factor(c_.factors[i], i > 0, out[i])) return false;
+  return true;
+}
+
+// The classes no point of the box can have: some factor's enclosure on the box is ≤ 0
+// where the class needs it > 0, or ≥ 0 where it needs it < 0.
+Mask CountCheck::excluded(const std::vector<Ival>& b) {
+  std::vector<Ival> g;
+  if (!factors(b, g)) return 0;
+  Mask out = 0;
+  for (Mask s = 0; s < (Mask(1) << c_.p); ++s)
+    for (int i = 0; i < c_.p; ++i) {
+      const bool positive = (s >> i) & 1;
+      if (positive ? g[i].end_sign(Hi) <= 0 : g[i].end_sign(Lo) >= 0) out |= Mask(1) << s;
+    }
+  return out;
+}
+Mask CountCheck::excluded(const Box& b) { return excluded(ivals(b)); }
+
+// A point of W_s in the cell's box: at the u-point, Hansen–Sengupta in w (from the hint,
+// ε-inflated) proves a unique zero in H, which lies in the box and in the declared domain,
+// and on {u} × H every factor has the sign of class s.
+bool CountCheck::point(const Cell& cell, const std::vector<int>& w, const std::vector<double>& u,
+                       const Box& hint, Mask cls) {
+  std::vector<int> uv;
+  for (int v = 0; v < nv_; ++v)
+    if (std::find(w.begin(), w.end(), v) == w.end()) uv.push_back(v);
+  std::vector<Ival> b(nv_);
+  for (int k = 0; k < n_; ++k) {
+    const int v = uv[k];
+    if (!within(cell.box[2 * v], cell.box[2 * v + 1], u[k], u[k])) return false;
+    if (!c_.periodic[v] && !c_.within_domain(v, u[k], u[k])) return false;
+    b[v].set(u[k], u[k]);
+  }
+  Box X = hint;
+  auto inflate = [&](Box& x) {
+    for (int j = 0; j < n_; ++j) {
+      const double lo = x[2 * j], hi = x[2 * j + 1], mid = 0.5 * (lo + hi);
+      const double r = 0.55 * (hi - lo) + 1e-13 * (1 + std::fabs(mid));
+      x[2 * j] = std::nextafter(std::min(lo, mid - r), -INFINITY);
+      x[2 * j + 1] = std::nextafter(std::max(hi, mid + r), INFINITY);
+    }
+  };
+  inflate(X);
+  std::vector<Ival> y;
+  for (int it = 0; it < 12; ++it) {
+    for (int j = 0; j < n_; ++j) b[w[j]].set(X[2 * j], X[2 * j + 1]);
+    if (hansen_sengupta(b, w, y) != Hs::Image) return false;
+    bool inside_x = true;
+    for (int j = 0; j < n_; ++j) inside_x = inside_x && inside(y[j], X[2 * j], X[2 * j + 1], true);
+    if (inside_x) {
+      for (int j = 0; j < n_; ++j) {
+        const int v = w[j];
+        if (!inside(y[j], cell.box[2 * v], cell.box[2 * v + 1], false)) return false;
+        if (!c_.periodic[v] && !c_.within_domain(v, y[j].lo(), y[j].hi())) return false;
+        b[v] = y[j];
+      }
+      std::vector<Ival> g;
+      if (!factors(b, g)) return false;
+      for (int i = 0; i < c_.p; ++i)
+        if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) return false;
+      return true;
+    }
+    for (int j = 0; j < n_; ++j) X[2 * j] = y[j].lo(), X[2 * j + 1] = y[j].hi();
+    inflate(X);
+  }
+  return false;
+}
+
+// W_s ∩ box = ∅ by a paving of the chart's U: on each part, every zero of the cell's box
+// has its w in W̃ (box_w ⊆ W̃) and so in W̃ ∩ y ∩ box_w (Hansen–Sengupta); a part is cleared
+// when that is empty or a factor's enclosure over it excludes the class.
+bool CountCheck::paving(const Cell& cell, Mask cls) {
+  if (cell.w.empty()) return false;
+  std::vector<int> uv;
+  for (int v = 0; v < nv_; ++v)
+    if (std::find(cell.w.begin(), cell.w.end(), v) == cell.w.end()) uv.push_back(v);
+  std::vector<Box> stack{cell.box};
+  long parts = 0;
+  std::vector<Ival> y;
+  while (!stack.empty()) {
+    Box z = std::move(stack.back());
+    stack.pop_back();
+    if (++parts > 4096) return false;
+    std::vector<Ival> b = ivals(z);
+    for (int j = 0; j < n_; ++j) b[cell.w[j]].set(cell.w_tilde[2 * j], cell.w_tilde[2 * j + 1]);
+    const Hs h = hansen_sengupta(b, cell.w, y);
+    if (h == Hs::Empty) continue;
+    bool cleared = false;
+    if (h == Hs::Image) {
+      for (int j = 0; j < n_ && !cleared; ++j) {
+        const int v = cell.w[j];
+        Ival box_w;
+        box_w.set(z[2 * v], z[2 * v + 1]);
+        cleared = !b[v].meet(y[j]) || !b[v].meet(box_w);
+      }
+      if (!cleared) cleared = (excluded(b) >> cls) & 1;
+    }
+    if (cleared) continue;
+    int best = -1;
+    double rel = 1e-9;
+    for (int k = 0; k < n_; ++k) {
+      const int v = uv[k];
+      const double full = cell.box[2 * v + 1] - cell.box[2 * v];
+      const double r = (z[2 * v + 1] - z[2 * v]) / (full > 0 ? full : 1.0);
+      if (r > rel) rel = r, best = v;
+    }
+    if (best < 0) return false;
+    const double mid = 0.5 * (z[2 * best] + z[2 * best + 1]);
+    if (!(z[2 * best] < mid && mid < z[2 * best + 1])) return false;
+    Box right = z;
+    z[2 * best + 1] = mid;
+    right[2 * best] = mid;
+    stack.push_back(std::move(z));
+    stack.push_back(std::move(right));
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------- records
+
+// The cell a record is about: an id below the announced number, records in id order.
+long CountCheck::cell_id(bool order) {
+  const long id = c_.index(cells_.size());
+  if (order) {
+    if (id < last_id_) reject("count records are not in cell order");
+    last_id_ = id;
+    if (cells_[id].state == State::Pending) reject("a half's first record must be 'half'");
+    if (cells_[id].state == State::Unmade) reject("no such cell yet");
+  }
+  return id;
+}
+
+std::vector<int> CountCheck::chart_vars() {
+  std::vector<int> w(n_);
+  for (int j = 0; j < n_; ++j) {
+    w[j] = int(c_.index(nv_));
+    for (int k = 0; k < j; ++k)
+      if (w[k] == w[j]) reject("a chart names a variable twice");
+  }
+  return w;
+}
+
+Mask CountCheck::class_field() {
+  const std::string_view s = c_.rd.word();
+  if (!c_.well_formed(s) || s.find('0') != s.npos) malformed(rec(), "bad class '" + std::string(s) + "'");
+  Mask cls = 0;
+  for (int i = 0; i < c_.p; ++i)
+    if (s[i] == '+') cls |= Mask(1) << i;
+  return cls;
+}
+
+// half ID BOX: the box of a half its parent's split left pending, contracted: the closed
+// slabs between them hold no solution (refuted as a contraction record's are).
+void CountCheck::half() {
+  c_.rd.count(2 + 2 * size_t(nv_));
+  const long id = c_.index(cells_.size());
+  if (id < last_id_) reject("count records are not in cell order");
+  last_id_ = id;
+  Cell& cell = cells_[id];
+  if (cell.state != State::Pending) reject("no split left this cell pending");
+  const Box b = reals_box(nv_);
+  Box cur = cell.origin;
+  for (int v = 0; v < nv_; ++v) {
+    const double lo = cur[2 * v], hi = cur[2 * v + 1];
+    if (!within(lo, hi, b[2 * v], b[2 * v + 1])) reject("the half's box is not inside the half");
+    Box slab = cur;
+    put(slab, v, lo, b[2 * v]);
+    if (b[2 * v] > lo && !refute(slab)) reject("cannot refute the slab below the half's box" + c_.show(slab));
+    put(slab, v, b[2 * v + 1], hi);
+    if (b[2 * v + 1] < hi && !refute(slab)) reject("cannot refute the slab above the half's box" + c_.show(slab));
+    put(cur, v, b[2 * v], b[2 * v + 1]);
+  }
+  cell.origin = cell.box = b;
+  cell.state = State::Live;
+}
+
+// fit ID W W~ BOX: the chart's iterate W̃ holds the origin's w; Hansen–Sengupta on
+// origin_u × W̃ gives H ⊆ int W̃, so every solution of the origin is (u, w(u)) with w(u) ∈
+// origin_w ∩ H (∩ the domain's enclosure on a non-periodic w), which BOX holds; BOX keeps
+// the origin's u and lies in W̃ (so V ∩ BOX is the graph over U cut by BOX's w).
+// void ID W W~: the same step shows no solution in the origin.
+void CountCheck::fit(bool void_only) {
+  c_.rd.count(2 + size_t(n_) + 2 * size_t(n_) + (void_only ? 0 : 2 * size_t(nv_)));
+  const long id = cell_id();
+  Cell& cell = cells_[id];
+  if (cell.state != State::Live || cell.box != cell.origin || cell.claimed)
+    reject("a chart record must follow the cell's creation");
+  const std::vector<int> w = chart_vars();
+  const Box wt = reals_box(n_);
+  const Box B = void_only ? Box() : reals_box(nv_);
+  std::vector<Ival> b = ivals(cell.origin);
+  for (int j = 0; j < n_; ++j) {
+    const int v = w[j];
+    if (!within(wt[2 * j], wt[2 * j + 1], cell.origin[2 * v], cell.origin[2 * v + 1]))
+      reject("the chart's W~ does not hold the box's " + c_.m.vars[v].name);
+    b[v].set(wt[2 * j], wt[2 * j + 1]);
+  }
+  std::vector<Ival> y;
+  const Hs h = hansen_sengupta(b, w, y);
+  if (void_only) {
+    bool none = h == Hs::Empty;
+    for (int j = 0; j < n_ && h == Hs::Image && !none; ++j) {
+      const int v = w[j];
+      Ival o;
+      o.set(cell.origin[2 * v], cell.origin[2 * v + 1]);
+      Ival yj = y[j];
+      none = !yj.meet(o) || (!c_.periodic[v] && !yj.meet([&] {
+                               Ival d;
+                               d.set(c_.root[2 * v], c_.root[2 * v + 1]);
+                               return d;
+                             }()));
+    }
+    if (!none) reject("void: the chart does not show the box empty" + c_.show(cell.origin));
+    cell.state = State::Void;
+    return;
+  }
+  if (h != Hs::Image) reject("chart: Hansen-Sengupta fails on the box" + c_.show(cell.origin));
+  for (int j = 0; j < n_; ++j)
+    if (!inside(y[j], wt[2 * j], wt[2 * j + 1], true))
+      reject("chart: the Hansen-Sengupta image is not inside the interior of W~");
+  // The origin's solutions lie in W̃ ∩ y; the same step on origin_u × (W̃ ∩ y) encloses them
+  // again, often more tightly than one step (whose image the solver's box may have met
+  // with the origin's w, with ends a rounding apart from this one's).
+  bool no_zero = false;
+  for (int it = 0; it < 3 && !no_zero; ++it) {
+    for (int j = 0; j < n_; ++j) b[w[j]] = y[j];
+    std::vector<Ival> y2;
+    const Hs again = hansen_sengupta(b, w, y2);
+    if (again == Hs::Empty) no_zero = true;
+    if (again != Hs::Image) break;
+    for (int j = 0; j < n_ && !no_zero; ++j) no_zero = !y[j].meet(y2[j]);
+  }
+  for (int v = 0; v < nv_; ++v) {
+    const auto it = std::find(w.begin(), w.end(), v);
+    if (it == w.end()) {
+      if (B[2 * v] != cell.origin[2 * v] || B[2 * v + 1] != cell.origin[2 * v + 1])
+        reject("chart: the box's u changed");
+      continue;
+    }
+    const size_t j = size_t(it - w.begin());
+    if (!within(wt[2 * j], wt[2 * j + 1], B[2 * v], B[2 * v + 1]))
+      reject("chart: the box's " + c_.m.vars[v].name + " leaves W~");
+    // B_v ⊇ origin_v ∩ H_j (∩ the root cell's v if it is not periodic): each end of the
+    // meet is one of the ends it is the max (min) of.
+    const bool dom = !c_.periodic[v];
+    const bool lo_ok = B[2 * v] <= cell.origin[2 * v] || cmp(y[j], Lo, B[2 * v]) >= 0 ||
+                       (dom && B[2 * v] <= c_.root[2 * v]);
+    const bool hi_ok = B[2 * v + 1] >= cell.origin[2 * v + 1] || cmp(y[j], Hi, B[2 * v + 1]) <= 0 ||
+                       (dom && B[2 * v + 1] >= c_.root[2 * v + 1]);
+    // An empty meet: the origin holds no solution, any box will do.
+    const bool empty_meet = cmp(y[j], Lo, cell.origin[2 * v + 1]) > 0 ||
+                            cmp(y[j], Hi, cell.origin[2 * v]) < 0;
+    if (!(lo_ok && hi_ok) && !empty_meet && !no_zero)
+      reject("chart: the box does not hold the origin's solutions in " + c_.m.vars[v].name);
+  }
+  cell.box = B;
+  cell.w = w;
+  cell.w_tilde = wt;
+}
+
+// none ID: the origin holds no solution (refuted).
+void CountCheck::none() {
+  c_.rd.count(2);
+  const long id = cell_id();
+  Cell& cell = cells_[id];
+  if (cell.state != State::Live || cell.box != cell.origin || cell.claimed)
+    reject("a 'none' record must follow the cell's creation");
+  if (!refute(cell.origin)) reject("cannot refute the box" + c_.show(cell.origin));
+  cell.state = State::Void;
+}
+
+// split ID V X L R: the cell's box cut at X on V into closed halves; a half is the new
+// cell L (R), or -1: refuted.
+void CountCheck::split() {
+  c_.rd.count(6);
+  const long id = cell_id();
+  Cell& cell = cells_[id];
+  if (cell.state != State::Live || cell.claimed) reject("split of a cell that is not live");
+  const long v = c_.index(nv_);
+  const double x = c_.rd.real();
+  if (!(cell.box[2 * v] < x && x < cell.box[2 * v + 1]))
+    reject("split point not strictly inside the box");
+  for (int side = 0; side < 2; ++side) {
+    const int64_t child = c_.rd.integer();
+    Box h = cell.box;
+    h[2 * v + (side == 0 ? 1 : 0)] = x;
+    if (child == -1) {
+      if (!refute(h)) reject("cannot refute the discarded half" + c_.show(h));
+      continue;
+    }
+    if (child <= id || child >= int64_t(cells_.size()) ||
+        cells_[child].state != State::Unmade)
+      reject("a split's half must be a new cell of a larger id");
+    cells_[child].state = State::Pending;
+    cells_[child].origin = cells_[child].box = h;
+  }
+  cell.state = State::Split;
+}
+
+// piece ID CLASS STATE PROOF.
+void CountCheck::piece() {
+  const long id = cell_id();
+  Cell& cell = cells_[id];
+  if (cell.state != State::Live && cell.state != State::Void)
+    reject("a piece of a cell that is not in the final cover");
+  const Mask cls = class_field();
+  if ((cell.claimed >> cls) & 1) reject("two piece records of one class");
+  cell.claimed |= Mask(1) << cls;
+  const std::string state(c_.rd.word());
+  const std::string proof(c_.rd.word());
+  if (state == "empty") {
+    c_.rd.count(5);
+    if (proof == "void") {
+      if (cell.state != State::Void) reject("empty by void: the cell is not shown empty");
+    } else if (proof == "signs") {
+      if (!(((excluded(cell.box) | excluded(cell.origin)) >> cls) & 1))
+        reject("empty by signs: no factor's enclosure excludes the class" + c_.show(cell.box));
+    } else if (proof == "paving") {
+      if (!paving(cell, cls)) reject("empty by paving: a part could not be cleared" + c_.show(cell.box));
+    } else if (proof == "other-class") {
+      cell.other_class |= Mask(1) << cls;  // checked once every piece is read
+    } else {
+      malformed(rec(), "unknown proof of an empty piece '" + proof + "'");
+    }
+    cell.empty |= Mask(1) << cls;
+    return;
+  }
+  if (state != "connected" && state != "nonempty" && state != "undecided")
+    malformed(rec(), "unknown piece state '" + state + "'");
+  if (proof == "-") {
+    c_.rd.count(5);
+    return;
+  }
+  if (proof != "point" || state == "undecided") malformed(rec(), "bad proof field '" + proof + "'");
+  c_.rd.count(5 + 4 * size_t(n_));
+  const std::vector<int> w = chart_vars();
+  const std::vector<double> u = c_.rd.reals(n_);
+  const Box hint = reals_box(n_);
+  if (cell.state == State::Void) reject("a point in a cell shown empty");
+  if (!point(cell, w, u, hint, cls))
+    reject("point: no zero of class " + std::to_string(cls) + " proved at the u-point" + c_.show(cell.box));
+  cell.point |= Mask(1) << cls;
+}
+
+// refuted A B CLASS: for every shift under which the closed boxes meet, their closed
+// intersection holds no solution, or a factor's enclosure on it excludes the class.
+void CountCheck::refuted() {
+  c_.rd.count(4);
+  const long a = c_.index(cells_.size());
+  const long b = c_.index(cells_.size());
+  const Mask cls = class_field();
+  if (!(a < b)) reject("refuted needs A < B");
+  for (long x : {a, b})
+    if (cells_[x].state != State::Live && cells_[x].state != State::Void)
+      reject("refuted: a cell that is not in the final cover");
+  std::vector<int> per;
+  for (int v = 0; v < nv_; ++v)
+    if (c_.periodic[v]) per.push_back(v);
+  if (per.size() > 12) reject("refuted: too many periodic variables");
+  std::vector<int> k(nv_, 0);
+  for (long code = 0; code < std::lround(std::pow(3, per.size())); ++code) {
+    long r = code;
+    for (int v : per) k[v] = int(r % 3) - 1, r /= 3;
+    Box I(2 * nv_);
+    bool meet = true;
+    Ival t;
+    for (int v = 0; v < nv_ && meet; ++v) {
+      double lo = cells_[b].box[2 * v], hi = cells_[b].box[2 * v + 1];
+      if (k[v]) {
+        shift_by_periods(t, c_.ev->two_pi, k[v], lo);
+        lo = t.lo();
+        shift_by_periods(t, c_.ev->two_pi, k[v], hi);
+        hi = t.hi();
+      }
+      lo = std::max(lo, cells_[a].box[2 * v]);
+      hi = std::min(hi, cells_[a].box[2 * v + 1]);
+      meet = lo <= hi;
+      put(I, v, lo, hi);
+    }
+    if (!meet) continue;
+    long budget = 1024;
+    if (!no_class(ivals(I), cls, 0, budget))
+      reject("refuted: cannot show the boxes' intersection free of the class" + c_.show(I));
+  }
+  refuted_[{a, b}] |= Mask(1) << cls;
+}
+
+// Empty by another class: an S record's box, unchanged, is the graph of q over its pose box
+// (P1), on which det Fx and det Fq do not vanish (P2): connected, so in one class; a point
+// of another class shows which.
+void CountCheck::finish() {
+  for (Cell& cell : cells_) {
+    if (!cell.other_class) continue;
+    if (!cell.solution || cell.state != State::Live || !cell.w.empty() || cell.box != cell.origin)
+      reject("empty by another class: the cell is not a solution box");
+    if (!(cell.point & ~cell.other_class)) reject("empty by another class: no point of another class");
+  }
+}
+
+// The graph G of FORMAT.md (C1): per class, the pieces not shown empty, joined on every
+// pair of M (the final cover's boxes) not refuted in that class; a component counts when
+// it holds a piece shown nonempty (a point, or an S box whose factors all have a sign).
+long CountCheck::lower_bound() {
+  std::vector<long> ids;
+  OutBoxes F;
+  F.nv = nv_;
+  std::vector<Mask> nodes, nonempty;
+  const Mask all = (c_.p >= 6 ? ~Mask(0) : (Mask(1) << (Mask(1) << c_.p)) - 1);
+  for (size_t id = 0; id < cells_.size(); ++id) {
+    const Cell& cell = cells_[id];
+    if (cell.state != State::Live) continue;
+    ids.push_back(long(id));
+    F.add_box(cell.box.data());
+    F.pos.push_back(0), F.neg.push_back(0), F.solution.push_back(cell.solution);
+    Mask ne = cell.point;
+    const Mask ex = excluded(cell.box) | excluded(cell.origin);
+    if (cell.solution && cell.box == cell.origin) {
+      std::vector<Ival> g;
+      Mask cls = 0;
+      bool all_signs = factors(ivals(cell.box), g);
+      for (int i = 0; all_signs && i < c_.p; ++i) {
+        all_signs = g[i].sign() != 0;
+        if (g[i].sign() > 0) cls |= Mask(1) << i;
+      }
+      if (all_signs) ne |= Mask(1) << cls;
+    }
+    nodes.push_back(all & ~ex & ~cell.empty);
+    nonempty.push_back(ne & all & ~ex & ~cell.empty);
+  }
+  const size_t m = ids.size();
+  const int classes = 1 << c_.p;
+  std::vector<UnionFind> uf(classes);
+  for (UnionFind& u : uf) u.reset(m);
+  PlainSweep M(F, c_.periodic, c_.ev->two_pi);
+  M.run([&](int i, int j) {
+    const long a = std::min(ids[i], ids[j]), b = std::max(ids[i], ids[j]);
+    auto r = refuted_.find({a, b});
+    const Mask cut = r == refuted_.end() ? 0 : r->second;
+    const Mask both = nodes[i] & nodes[j] & ~cut;
+    for (int s = 0; s < classes; ++s)
+      if ((both >> s) & 1) uf[s].unite(i, j);
+  }, (size_t(1) << 22) + 64 * m);
+  long bound = 0;
+  for (int s = 0; s < classes; ++s) {
+    std::vector<uint8_t> counted(m, 0);
+    for (size_t i = 0; i < m; ++i) {
+      if (!((nonempty[i] >> s) & 1)) continue;
+      const int root = uf[s].find(int(i));
+      if (!counted[root]) counted[root] = 1, ++bound;
+    }
+  }
+  return bound;
+}
+
+void CountCheck::run() {
+  if (c_.p > kMaxCountFactors) reject("a count certificate has at most 6 factors");
+  for (const Factor& f : c_.factors)
+    if (f.kind == Factor::User) reject("a count certificate cannot rest on a user factor");
+  if (!c_.m.constraints.empty()) reject("a count certificate's model has no constraint");
+  const int64_t total = c_.rd.expect({"count"}, 2).integer();
+  first_ = long(c_.rd.integer());
+  if (first_ != long(c_.R.size())) reject("count: the first cover is the tree's output boxes");
+  if (total < first_ || total > (int64_t(1) << 30)) reject("count: bad number of cells");
+  cells_.resize(size_t(total));
+  for (long i = 0; i < first_; ++i) {
+    Cell& cell = cells_[i];
+    cell.origin.assign(c_.R.box(i), c_.R.box(i) + 2 * nv_);
+    cell.box = cell.origin;
+    cell.solution = c_.R.solution[i];
+    cell.state = State::Live;
+  }
+  for (;;) {
+    c_.rd.next();
+    const std::string k(c_.rd.kind());
+    if (k == "claim") break;
+    if (k == "half") half();
+    else if (k == "fit") fit(false);
+    else if (k == "void") fit(true);
+    else if (k == "none") none();
+    else if (k == "split") split();
+    else if (k == "piece") piece();
+    else if (k == "refuted") {
+      last_id_ = long(cells_.size());  // no cell record after the refutations
+      refuted();
+    } else malformed(rec(), "unknown count record '" + k + "'");
+  }
+  for (const Cell& cell : cells_)
+    if (cell.state == State::Unmade || cell.state == State::Pending)
+      reject("count: a cell announced is never made, or a half never given its box");
+  finish();
+  const int64_t claim = c_.rd.require({"claim", "count-lower"}, 1).integer();
+  const long claim_rec = rec();
+  if (claim < 0) malformed(rec(), "negative lower bound");
+  c_.rd.expect({"claim", "count-upper"}, 1);
+  const std::string_view upper = c_.rd.word();
+  // This format records no proof of connectedness or of a join (FORMAT.md): an upper bound
+  // cannot be verified, so a claimed one is refused.
+  if (upper != "none") reject("claimed upper bound " + std::string(upper) + " is not verified: the certificate holds no proof of connected pieces and joins");
+  const int64_t records = c_.rd.expect({"end"}, 1).integer();
+  if (records != rec() - 1) malformed(rec(), "end: wrong record count");
+  c_.rd.expect_eof();
+  long cover = 0;
+  for (const Cell& cell : cells_) cover += cell.state == State::Live;
+  c_.out.count_cells = cover;
+  c_.out.recomputed = c_.out.checked = lower_bound();
+  c_.out.claimed = claim;
+  if (claim > c_.out.recomputed)
+    rejected(claim_rec, "claimed lower bound " + std::to_string(claim) + " exceeds the recomputed " +
+                            std::to_string(c_.out.recomputed));
+  c_.out.outcome = Outcome::Verified;
+}
+
+}  // namespace cc
