@@ -153,7 +153,13 @@ void CountCertificateWriter::finish(const Model& model, const CountResult& r) {
       out.word("piece").integer(long(id)).word(signs_of(q.cls, p)).word(state_word(q.state));
       if (q.state == PieceState::Empty) {
         out.word(empty_word(q.empty_by));
-      } else if (!q.point_u.empty()) {
+        out.end();
+        continue;
+      }
+      out.word(q.state != PieceState::Connected       ? "-"
+               : q.connected_by == CountCellRecord::Star ? "star"
+                                                         : "graph");
+      if (!q.point_u.empty()) {
         out.word("point");
         for (int w : q.point_w) out.integer(w);
         out.reals(q.point_u).reals(q.point_hint);
@@ -165,10 +171,21 @@ void CountCertificateWriter::finish(const Model& model, const CountResult& r) {
   }
   for (const CountRecords::Refuted& e : rec.refuted)
     out.word("refuted").integer(e.a).integer(e.b).word(signs_of(e.cls, p)).end();
+  for (const CountRecords::Joined& e : rec.joined) {
+    out.word("joined").integer(e.a).integer(e.b).word(signs_of(e.cls, p));
+    std::string shift;
+    for (int k : e.shift) shift += "-0+"[k + 1];
+    out.word(shift).word(e.bridge ? "bridge" : "point");
+    for (int w : e.w) out.integer(w);
+    if (e.bridge) out.reals(e.w_tilde);
+    else out.reals(e.u).reals(e.hint);
+    out.end();
+  }
   out.word("claim").word("count-lower").integer(r.bounds.lower).end();
-  // The records that would prove connectedness and joins are not written yet: no upper
-  // bound is claimed (FORMAT.md, "Count certificates").
-  out.word("claim").word("count-upper").word("none").end();
+  out.word("claim").word("count-upper");
+  if (r.bounds.upper >= 0) out.integer(r.bounds.upper);
+  else out.word("none");
+  out.end();
   out.word("end").integer(out.records()).end();
   AtomicFile file(path_);
   file.write(text);

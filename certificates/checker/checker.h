@@ -160,6 +160,7 @@ struct Verdict {
   long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user
   bool user_factors = false;
   long count_cells = -1;  // a count certificate (count_check.cpp): boxes of its final cover
+  long count_upper = -1;  // its verified upper bound (-1: none claimed)
 };
 
 Verdict check_certificate(FILE* f, const CheckOptions& o);
@@ -393,6 +394,12 @@ class Prover {
 // An approximate inverse of the n×n matrix M (row major; M is spoilt) by Gauss–Jordan in
 // binary64 (proofs.cpp): a choice of preconditioner, never trusted. False when singular.
 bool invert(std::vector<double>& M, int n, std::vector<double>& inv);
+// The determinant of the n×n interval matrix M (row major) by cofactor expansion along the
+// first row (proofs.cpp); the entire line for n > 6.
+void det(const std::vector<Ival>& M, int n, Ival& out);
+// Appends to m the nodes of the Jacobian of its equations, ∂f_r/∂x_v as out[r][v] (−1 where
+// min, max or abs leave it without a rule): derivative.cpp.
+std::vector<std::vector<int>> jacobian_nodes(Model& m);
 
 // ---- The combinatorial half of the check (bound.cpp; fast_sweep.cpp): a union-find, the
 // neighbourhood graph M of FORMAT.md ("claim lower-bound") by sort-and-sweep over the output

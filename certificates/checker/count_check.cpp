@@ -31,11 +31,14 @@ class CountCheck {
     State state = State::Unmade;
     Box origin, box;             // as created; now (after its chart)
     bool solution = false;       // an S record's output box, unchanged
-    std::vector<int> w;          // its chart (fit), for a paving
+    std::vector<int> w;          // its chart (fit), for a paving or a star test
     Box w_tilde;
+    std::vector<Ival> range;     // the chart's image: every w(u), u ∈ U, lies in it
     Mask claimed = 0;            // classes with a piece record
     Mask empty = 0, point = 0;   // verified: empty pieces, pieces holding a point of W_s
+    Mask connected = 0;          // verified: connected pieces (nonempty: with a point too)
     Mask other_class = 0;        // empty because another class holds the graph (checked last)
+    Mask graph_of_s = 0;         // connected as the graph of an S box, if nonempty (last)
   };
 
   Checker& c_;
@@ -44,7 +47,15 @@ class CountCheck {
   long first_ = 0;
   long last_id_ = -1;
   std::vector<Cell> cells_;
-  std::map<std::pair<long, long>, Mask> refuted_;
+  std::map<std::pair<long, long>, Mask> refuted_, joined_;
+  // The star test's second derivatives: a copy of the model with the nodes of its Jacobian
+  // (derivative.cpp), and an evaluator of them, made on first use.
+  std::string upper_open_;  // why no upper bound, when none is proved
+  std::unique_ptr<Model> dm_;
+  std::unique_ptr<Evaluator> dev_;
+  std::vector<std::vector<int>> jn_;
+  std::vector<int> jprog_;
+  bool jn_ok_ = true;
 
   long rec() const { return c_.rec(); }
   [[noreturn]] void reject(const std::string& why) { c_.reject(why); }
@@ -61,6 +72,8 @@ class CountCheck {
   void split();
   void piece();
   void refuted();
+  void joined();
+  void every_cell_made();
   void finish();
 
   // ----- proofs
@@ -70,10 +83,18 @@ class CountCheck {
   bool factors(const std::vector<Ival>& box, std::vector<Ival>& out);
   Mask excluded(const Box& b);
   Mask excluded(const std::vector<Ival>& b);
-  bool point(const Cell& cell, const std::vector<int>& w, const std::vector<double>& u,
-             const Box& hint, Mask cls);
+  bool point(const Box& box, const std::vector<int>& w, const std::vector<double>& u,
+             const Box& hint, Mask cls, std::vector<Ival>* at = nullptr);
   bool paving(const Cell& cell, Mask cls);
+  bool graph(const Cell& cell, Mask cls);
+  bool star(const Cell& cell, Mask cls, const std::vector<int>& w, const std::vector<double>& v,
+            const Box& hint);
+  bool factor_gradients(const std::vector<Ival>& b, std::vector<std::vector<Ival>>& grad);
+  bool implicit_jacobian(const std::vector<Ival>& b, const std::vector<int>& w,
+                         std::vector<Ival>& X);
+  bool inside_root(const Box& b) const;
   long lower_bound();
+  long upper_bound();
 
   std::vector<Ival> ivals(const Box& b) const {
     std::vector<Ival> out(b.size() / 2);
@@ -232,15 +253,15 @@ Mask CountCheck::excluded(const Box& b) { return excluded(ivals(b)); }
 // A point of W_s in the cell's box: at the u-point, Hansen–Sengupta in w (from the hint,
 // ε-inflated) proves a unique zero in H, which lies in the box and in the declared domain,
 // and on {u} × H every factor has the sign of class s.
-bool CountCheck::point(const Cell& cell, const std::vector<int>& w, const std::vector<double>& u,
-                       const Box& hint, Mask cls) {
+bool CountCheck::point(const Box& box, const std::vector<int>& w, const std::vector<double>& u,
+                       const Box& hint, Mask cls, std::vector<Ival>* at) {
   std::vector<int> uv;
   for (int v = 0; v < nv_; ++v)
     if (std::find(w.begin(), w.end(), v) == w.end()) uv.push_back(v);
   std::vector<Ival> b(nv_);
   for (int k = 0; k < n_; ++k) {
     const int v = uv[k];
-    if (!within(cell.box[2 * v], cell.box[2 * v + 1], u[k], u[k])) return false;
+    if (!within(box[2 * v], box[2 * v + 1], u[k], u[k])) return false;
     if (!c_.periodic[v] && !c_.within_domain(v, u[k], u[k])) return false;
     b[v].set(u[k], u[k]);
   }
@@ -263,7 +284,7 @@ bool CountCheck::point(const Cell& cell, const std::vector<int>& w, const std::v
     if (inside_x) {
       for (int j = 0; j < n_; ++j) {
         const int v = w[j];
-        if (!inside(y[j], cell.box[2 * v], cell.box[2 * v + 1], false)) return false;
+        if (!inside(y[j], box[2 * v], box[2 * v + 1], false)) return false;
         if (!c_.periodic[v] && !c_.within_domain(v, y[j].lo(), y[j].hi())) return false;
         b[v] = y[j];
       }
@@ -271,6 +292,7 @@ bool CountCheck::point(const Cell& cell, const std::vector<int>& w, const std::v
       if (!factors(b, g)) return false;
       for (int i = 0; i < c_.p; ++i)
         if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) return false;
+      if (at) *at = y;
       return true;
     }
     for (int j = 0; j < n_; ++j) X[2 * j] = y[j].lo(), X[2 * j + 1] = y[j].hi();
@@ -469,6 +491,7 @@ void CountCheck::fit(bool void_only) {
   cell.box = B;
   cell.w = w;
   cell.w_tilde = wt;
+  cell.range = y;
 }
 
 // none ID: the origin holds no solution (refuted).
@@ -540,19 +563,43 @@ void CountCheck::piece() {
   }
   if (state != "connected" && state != "nonempty" && state != "undecided")
     malformed(rec(), "unknown piece state '" + state + "'");
-  if (proof == "-") {
-    c_.rd.count(5);
-    return;
+  // `proof` is how the piece is connected: graph, star, or `-` when it is not claimed.
+  const bool connected = state == "connected";
+  if (connected ? proof != "graph" && proof != "star" : proof != "-")
+    malformed(rec(), "bad connectedness field '" + proof + "'");
+  const std::string with(c_.rd.word());
+  if (with == "-") {
+    c_.rd.count(6);
+    if (proof == "star") malformed(rec(), "a star test needs its centre");
+  } else {
+    if (with != "point" || state == "undecided") malformed(rec(), "bad point field '" + with + "'");
+    c_.rd.count(6 + 4 * size_t(n_));
   }
-  if (proof != "point" || state == "undecided") malformed(rec(), "bad proof field '" + proof + "'");
-  c_.rd.count(5 + 4 * size_t(n_));
-  const std::vector<int> w = chart_vars();
-  const std::vector<double> u = c_.rd.reals(n_);
-  const Box hint = reals_box(n_);
-  if (cell.state == State::Void) reject("a point in a cell shown empty");
-  if (!point(cell, w, u, hint, cls))
-    reject("point: no zero of class " + std::to_string(cls) + " proved at the u-point" + c_.show(cell.box));
-  cell.point |= Mask(1) << cls;
+  std::vector<int> w;
+  std::vector<double> u;
+  Box hint;
+  if (with == "point") {
+    w = chart_vars();
+    u = c_.rd.reals(n_);
+    hint = reals_box(n_);
+    if (cell.state == State::Void) reject("a point in a cell shown empty");
+    if (!point(cell.box, w, u, hint, cls))
+      reject("point: no zero of the class proved at the u-point" + c_.show(cell.box));
+    cell.point |= Mask(1) << cls;
+  }
+  if (proof == "graph") {
+    if (cell.solution && cell.box == cell.origin && cell.w.empty()) {
+      cell.graph_of_s |= Mask(1) << cls;  // judged once every piece of the cell is read
+    } else {
+      if (!graph(cell, cls))
+        reject("connected: the box is not the graph of its chart in one class" + c_.show(cell.box));
+      cell.connected |= Mask(1) << cls;
+    }
+  } else if (proof == "star") {
+    if (!star(cell, cls, w, u, hint))
+      reject("connected: the star-shaped test fails about the centre" + c_.show(cell.box));
+    cell.connected |= Mask(1) << cls;
+  }
 }
 
 // refuted A B CLASS: for every shift under which the closed boxes meet, their closed
@@ -607,6 +654,25 @@ void CountCheck::finish() {
     if (!cell.solution || cell.state != State::Live || !cell.w.empty() || cell.box != cell.origin)
       reject("empty by another class: the cell is not a solution box");
     if (!(cell.point & ~cell.other_class)) reject("empty by another class: no point of another class");
+  }
+  // Connected as an S box's graph (P1, P2): in one class, s, when all factors have its sign
+  // on the box or a point of s is verified in it.
+  for (Cell& cell : cells_) {
+    if (!cell.graph_of_s) continue;
+    std::vector<Ival> g;
+    Mask certain = 0;
+    if (factors(ivals(cell.box), g)) {
+      Mask cls = 0;
+      bool all = true;
+      for (int i = 0; i < c_.p; ++i) {
+        all = all && g[i].sign() != 0;
+        if (g[i].sign() > 0) cls |= Mask(1) << i;
+      }
+      if (all) certain = Mask(1) << cls;
+    }
+    if (cell.graph_of_s & ~(cell.point | certain))
+      reject("connected: an S box's piece with neither a point nor every sign of its class");
+    cell.connected |= cell.graph_of_s;
   }
 }
 
@@ -665,6 +731,397 @@ long CountCheck::lower_bound() {
   return bound;
 }
 
+
+// ---------------------------------------------------------------- connected pieces and joins
+
+// Non-periodic variables of b lie in the root cell (V ∩ b is then the graph itself, not a
+// part of it outside D).
+bool CountCheck::inside_root(const Box& b) const {
+  for (int v = 0; v < nv_; ++v)
+    if (!c_.periodic[v] && !within(c_.root[2 * v], c_.root[2 * v + 1], b[2 * v], b[2 * v + 1]))
+      return false;
+  return true;
+}
+
+// A fit's box whose chart's image lies in its w, inside the root cell, every factor of the
+// class's sign on it: W_s ∩ box = V ∩ box is the graph of the continuous w over U, connected
+// and nonempty.
+bool CountCheck::graph(const Cell& cell, Mask cls) {
+  if (cell.w.empty() || !inside_root(cell.box)) return false;
+  for (int j = 0; j < n_; ++j) {
+    const int v = cell.w[j];
+    if (!inside(cell.range[j], cell.box[2 * v], cell.box[2 * v + 1], false)) return false;
+  }
+  std::vector<Ival> g;
+  if (!factors(ivals(cell.box), g)) return false;
+  for (int i = 0; i < c_.p; ++i)
+    if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) return false;
+  return true;
+}
+
+// ∂g_i/∂x_v for every factor i over b, from the Jacobian's nodes and their AD: for a
+// determinant, Σ_r det(J with row r replaced by ∂J_r/∂x_v) (Jacobi's formula).
+bool CountCheck::factor_gradients(const std::vector<Ival>& b,
+                                  std::vector<std::vector<Ival>>& grad) {
+  if (!dm_) {
+    dm_.reset(new Model(c_.m));
+    jn_ = jacobian_nodes(*dm_);
+    std::vector<int> roots;
+    for (const auto& row : jn_)
+      for (int e : row) {
+        if (e < 0) jn_ok_ = false;
+        else roots.push_back(e);
+      }
+    jprog_ = closure(*dm_, roots);
+    dev_.reset(new Evaluator(*dm_));
+  }
+  if (!jn_ok_) return false;
+  dev_->work_limit = c_.work_limit();
+  if (!dev_->eval_ad(jprog_, b.data(), ~uint64_t(0) >> (64 - nv_))) return false;
+  const int n = n_;
+  grad.assign(c_.p, std::vector<Ival>(nv_));
+  std::vector<Ival> M(size_t(n) * n);
+  for (int i = 0; i < c_.p; ++i) {
+    const Factor& f = c_.factors[i];
+    const bool fx = f.kind == Factor::DetFx || f.kind == Factor::DiagFx;
+    const std::vector<int>& cols = fx ? c_.m.pose : c_.m.command;
+    for (int t = 0; t < nv_; ++t) {
+      if (f.kind == Factor::DiagFx || f.kind == Factor::DiagFq) {
+        grad[i][t] = dev_->der(jn_[f.arg][cols[f.arg]], t);
+        continue;
+      }
+      set_si(grad[i][t], 0);
+      Ival term;
+      for (int r = 0; r < n; ++r) {
+        for (int a = 0; a < n; ++a)
+          for (int c = 0; c < n; ++c)
+            M[a * n + c] = a == r ? dev_->der(jn_[a][cols[c]], t) : dev_->val(jn_[a][cols[c]]);
+        det(M, n, term);
+        add(grad[i][t], grad[i][t], term);
+      }
+      if (!grad[i][t].bounded()) return false;
+    }
+  }
+  return true;
+}
+
+// X = (∂_w f)^{-1} ∂_u f over b (n×n, row major; dw/du = −X), by a verified solve: with C
+// an approximate inverse of mid ∂_w f, A = C·∂_w f, B = C·∂_u f, E = I − A and β = ‖E‖_∞ < 1,
+// every point of b has X = B + E·X, so ‖X_{·k}‖_∞ ≤ ρ_k = max_l |B_lk| / (1 − β) and X_jk ∈
+// B_jk + Σ_l E_jl·[−ρ_k, ρ_k]. β < 1 also proves ∂_w f regular on b (w is C¹ there).
+bool CountCheck::implicit_jacobian(const std::vector<Ival>& b, const std::vector<int>& w,
+                                   std::vector<Ival>& X) {
+  Evaluator& ev = *c_.ev;
+  const int n = n_;
+  std::vector<int> u;
+  for (int v = 0; v < nv_; ++v)
+    if (std::find(w.begin(), w.end(), v) == w.end()) u.push_back(v);
+  limit();
+  if (!ev.eval_ad(ev.all_eqs, b.data(), ~uint64_t(0) >> (64 - nv_))) return false;
+  std::vector<double> M(size_t(n) * n), C;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Ival& d = ev.der(c_.m.eqs[i], w[j]);
+      M[i * n + j] = 0.5 * (d.lo() + d.hi());
+    }
+  if (!invert(M, n, C)) return false;
+  std::vector<Ival> E(size_t(n) * n), B(size_t(n) * n);
+  Ival t, beta, row;
+  set_si(beta, 0);
+  for (int i = 0; i < n; ++i) {
+    set_si(row, 0);
+    for (int j = 0; j < n; ++j) {
+      set_si(E[i * n + j], i == j ? 1 : 0);
+      set_si(B[i * n + j], 0);
+      for (int k = 0; k < n; ++k) {
+        mul_d(t, ev.der(c_.m.eqs[k], w[j]), C[i * n + k]);
+        sub(E[i * n + j], E[i * n + j], t);
+        mul_d(t, ev.der(c_.m.eqs[k], u[j]), C[i * n + k]);
+        add(B[i * n + j], B[i * n + j], t);
+      }
+      abs(t, E[i * n + j]);
+      add(row, row, t);
+    }
+    max(beta, beta, row);
+  }
+  Ival gap;  // 1 − β
+  si_sub(gap, 1, beta);
+  if (gap.sign() <= 0) return false;
+  X.resize(size_t(n) * n);
+  for (int k = 0; k < n; ++k) {
+    Ival rho;
+    set_si(rho, 0);
+    for (int l = 0; l < n; ++l) {
+      abs(t, B[l * n + k]);
+      max(rho, rho, t);
+    }
+    div(rho, rho, gap);
+    Ival r;
+    r.set(-rho.hi(), rho.hi());
+    for (int j = 0; j < n; ++j) {
+      X[j * n + k] = B[j * n + k];
+      for (int l = 0; l < n; ++l) {
+        mul(t, E[j * n + l], r);
+        add(X[j * n + k], X[j * n + k], t);
+      }
+      if (!X[j * n + k].bounded()) return false;
+    }
+  }
+  return true;
+}
+
+// The star-shaped test (FORMAT.md C4) about the centre v, on the cell's chart: the piece is
+// {u ∈ U : φ_i(u) = s_i g_i(u, w(u)) > 0 for the factors not of sign s_i on the whole box,
+// ψ(u) ≥ 0 for the faces of the box's w that the chart's image crosses}. The checker paves U
+// itself: a part is cleared when a constraint is certainly < 0 on it, or when every
+// constraint that case (i) or (ii) needs is certainly > 0 there or has ∇·(part − v)
+// certainly < 0; else it is halved (widest u relative to the box, down to 10^-6 of it, at
+// most 8192 parts).
+bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
+                      const std::vector<double>& v, const Box& hint) {
+  if (cell.w.empty() || w != cell.w || !inside_root(cell.box)) return false;
+  std::vector<int> uv;
+  for (int x = 0; x < nv_; ++x)
+    if (std::find(w.begin(), w.end(), x) == w.end()) uv.push_back(x);
+  struct Constraint {
+    int kind;  // 0 factor, 1 lower face, 2 upper face
+    int index;
+  };
+  std::vector<Constraint> cs;
+  std::vector<Ival> g;
+  const bool on_box = factors(ivals(cell.box), g);
+  for (int i = 0; i < c_.p; ++i)
+    if (!on_box || g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) cs.push_back({0, i});
+  for (int j = 0; j < n_; ++j) {
+    const int x = w[j];
+    if (cmp(cell.range[j], Lo, cell.box[2 * x]) < 0) cs.push_back({1, j});
+    if (cmp(cell.range[j], Hi, cell.box[2 * x + 1]) > 0) cs.push_back({2, j});
+  }
+  // The centre: a point of the piece with every constraint > 0 there.
+  std::vector<Ival> wv;
+  if (!point(cell.box, w, v, hint, cls, &wv)) return false;
+  for (const Constraint& c : cs) {
+    const int x = c.kind ? w[c.index] : 0;
+    if (c.kind == 1 && cmp(wv[c.index], Lo, cell.box[2 * x]) <= 0) return false;
+    if (c.kind == 2 && cmp(wv[c.index], Hi, cell.box[2 * x + 1]) >= 0) return false;
+  }
+  std::vector<Box> stack{cell.box};
+  long parts = 0;
+  std::vector<Ival> y, X, psi(cs.size());
+  std::vector<std::vector<Ival>> grad;
+  Ival t, d;
+  while (!stack.empty()) {
+    Box z = std::move(stack.back());
+    stack.pop_back();
+    if (++parts > 8192) return false;
+    // w over the part: in W̃ (unique) and in every image of the step on part × (W̃ ∩ ...).
+    std::vector<Ival> b = ivals(z);
+    for (int j = 0; j < n_; ++j) {
+      b[w[j]].set(cell.w_tilde[2 * j], cell.w_tilde[2 * j + 1]);
+      b[w[j]].meet(cell.range[j]);
+    }
+    bool empty = false;
+    for (int sweep = 0; sweep < 6 && !empty; ++sweep) {
+      double before = 0, after = 0;
+      for (int j = 0; j < n_; ++j) before += b[w[j]].hi() - b[w[j]].lo();
+      const Hs h = hansen_sengupta(b, w, y);
+      if (h == Hs::Empty) empty = true;
+      if (h != Hs::Image) break;
+      for (int j = 0; j < n_ && !empty; ++j) empty = !b[w[j]].meet(y[j]);
+      for (int j = 0; j < n_ && !empty; ++j) after += b[w[j]].hi() - b[w[j]].lo();
+      if (!(after < 0.5 * before)) break;
+    }
+    if (empty) continue;  // no point of the graph over this part
+    const bool defined = factors(b, g);
+    bool negative = false, strict_can_be_positive = true;
+    for (size_t k = 0; k < cs.size(); ++k) {
+      const Constraint& c = cs[k];
+      if (c.kind == 0) {
+        if (!defined) {
+          psi[k].entire();
+          continue;
+        }
+        psi[k] = g[c.index];
+        if (!((cls >> c.index) & 1)) neg(psi[k], psi[k]);
+        if (psi[k].end_sign(Hi) <= 0) strict_can_be_positive = false;
+      } else {
+        const double bound = cell.box[2 * w[c.index] + (c.kind == 2)];
+        t.set(bound, bound);
+        if (c.kind == 1) sub(psi[k], b[w[c.index]], t);
+        else sub(psi[k], t, b[w[c.index]]);
+      }
+      negative = negative || psi[k].sign() < 0;
+    }
+    if (negative) continue;
+    bool cleared = true, have_x = false, x_ok = false, have_g = false, g_ok = false;
+    for (size_t k = 0; k < cs.size() && cleared; ++k) {
+      const Constraint& c = cs[k];
+      if (c.kind && !strict_can_be_positive) continue;  // case (ii) impossible here
+      if (psi[k].sign() > 0) continue;                  // ≠ 0 on the part
+      if (!have_x) have_x = true, x_ok = implicit_jacobian(b, w, X);
+      cleared = false;
+      if (!x_ok) break;
+      std::vector<Ival> gr(n_);
+      if (c.kind == 0) {
+        if (!have_g) have_g = true, g_ok = factor_gradients(b, grad);
+        if (!g_ok) break;
+        const bool positive = (cls >> c.index) & 1;
+        for (int k2 = 0; k2 < n_; ++k2) {  // ∂_u g − ∂_w g·X, times s_i
+          gr[k2] = grad[c.index][uv[k2]];
+          for (int j = 0; j < n_; ++j) {
+            mul(t, grad[c.index][w[j]], X[j * n_ + k2]);
+            sub(gr[k2], gr[k2], t);
+          }
+          if (!positive) neg(gr[k2], gr[k2]);
+        }
+      } else {
+        for (int k2 = 0; k2 < n_; ++k2) {  // ∇w_j = −X_j·
+          gr[k2] = X[c.index * n_ + k2];
+          if (c.kind == 1) neg(gr[k2], gr[k2]);
+        }
+      }
+      set_si(d, 0);
+      for (int k2 = 0; k2 < n_; ++k2) {
+        t.set(v[k2], v[k2]);
+        Ival du;
+        sub(du, b[uv[k2]], t);
+        mul(t, gr[k2], du);
+        add(d, d, t);
+      }
+      cleared = d.sign() < 0;
+    }
+    if (cleared) continue;
+    int best = -1;
+    double rel = 1e-6;
+    for (int k = 0; k < n_; ++k) {
+      const int x = uv[k];
+      const double full = cell.box[2 * x + 1] - cell.box[2 * x];
+      const double r = (z[2 * x + 1] - z[2 * x]) / (full > 0 ? full : 1.0);
+      if (r > rel) rel = r, best = x;
+    }
+    if (best < 0) return false;
+    const double mid = 0.5 * (z[2 * best] + z[2 * best + 1]);
+    if (!(z[2 * best] < mid && mid < z[2 * best + 1])) return false;
+    Box right = z;
+    z[2 * best + 1] = mid;
+    right[2 * best] = mid;
+    stack.push_back(std::move(z));
+    stack.push_back(std::move(right));
+  }
+  return true;
+}
+
+// joined A B CLASS SHIFT point W U HINT | bridge W W~: a point of W_s in A ∩ (B + 2πk)
+// (the ends of B + 2πk rounded inward), or a bridge: with C the hull of A and B + 2πk (ends
+// rounded outward), the step on C_u × W̃ (W̃ ⊇ C_w) has its image H in int W̃ and, on a
+// non-periodic w, in the root cell, and every factor has the class's sign on C_u × H: V ∩ C
+// is then the graph of w over C_u ∩ the root, connected, in W_s, holding both pieces.
+void CountCheck::joined() {
+  const long a = c_.index(cells_.size());
+  const long b = c_.index(cells_.size());
+  const Mask cls = class_field();
+  if (!(a < b)) reject("joined needs A < B");
+  for (long x : {a, b})
+    if (cells_[x].state != State::Live) reject("joined: a cell that is not in the final cover");
+  const std::string_view shift = c_.rd.word();
+  if (shift.size() != size_t(nv_) || shift.find_first_not_of("-0+") != shift.npos)
+    malformed(rec(), "bad SHIFT field");
+  const std::string how(c_.rd.word());
+  if (how == "point") c_.rd.count(6 + 4 * size_t(n_));
+  else if (how == "bridge") c_.rd.count(6 + 3 * size_t(n_));
+  else malformed(rec(), "joined: unknown proof '" + how + "'");
+  const std::vector<int> w = chart_vars();
+  Box inner = cells_[a].box, hull = cells_[a].box;
+  Ival t;
+  for (int v = 0; v < nv_; ++v) {
+    const int k = shift[v] == '-' ? -1 : shift[v] == '+' ? 1 : 0;
+    if (k && !c_.periodic[v]) reject("joined: a shift on a variable that is not periodic");
+    double lo = cells_[b].box[2 * v], hi = cells_[b].box[2 * v + 1];
+    double ilo = lo, ihi = hi, olo = lo, ohi = hi;
+    if (k) {
+      shift_by_periods(t, c_.ev->two_pi, k, lo);
+      ilo = t.hi(), olo = t.lo();
+      shift_by_periods(t, c_.ev->two_pi, k, hi);
+      ihi = t.lo(), ohi = t.hi();
+    }
+    put(inner, v, std::max(inner[2 * v], ilo), std::min(inner[2 * v + 1], ihi));
+    put(hull, v, std::min(hull[2 * v], olo), std::max(hull[2 * v + 1], ohi));
+  }
+  if (how == "point") {
+    const std::vector<double> u = c_.rd.reals(n_);
+    const Box hint = reals_box(n_);
+    for (int v = 0; v < nv_; ++v)
+      if (!(inner[2 * v] <= inner[2 * v + 1])) reject("joined: the boxes do not meet");
+    if (!point(inner, w, u, hint, cls)) reject("joined: no point of the class proved in both boxes");
+  } else {
+    const Box wt = reals_box(n_);
+    std::vector<Ival> box = ivals(hull), y;
+    for (int j = 0; j < n_; ++j) {
+      const int v = w[j];
+      if (!within(wt[2 * j], wt[2 * j + 1], hull[2 * v], hull[2 * v + 1]))
+        reject("joined: the bridge's W~ does not hold the hull");
+      box[v].set(wt[2 * j], wt[2 * j + 1]);
+    }
+    if (hansen_sengupta(box, w, y) != Hs::Image) reject("joined: the bridge's chart fails");
+    for (int j = 0; j < n_; ++j) {
+      const int v = w[j];
+      if (!inside(y[j], wt[2 * j], wt[2 * j + 1], true))
+        reject("joined: the bridge's image is not inside the interior of W~");
+      if (!c_.periodic[v] && !inside(y[j], c_.root[2 * v], c_.root[2 * v + 1], false))
+        reject("joined: the bridge's graph leaves the domain");
+      box[v] = y[j];
+    }
+    std::vector<Ival> g;
+    if (!factors(box, g)) reject("joined: a factor is not defined on the bridge");
+    for (int i = 0; i < c_.p; ++i)
+      if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1))
+        reject("joined: a factor's sign on the bridge is not the class's");
+  }
+  joined_[{a, b}] |= Mask(1) << cls;
+}
+
+// The graph H of FORMAT.md (C6): per class, the same nodes as the lower bound's, joined by the
+// verified joins. −1 unless every node's piece is proved connected.
+long CountCheck::upper_bound() {
+  const int classes = 1 << c_.p;
+  std::vector<long> index(cells_.size(), -1);
+  std::vector<Mask> nodes;
+  long m = 0;
+  for (size_t id = 0; id < cells_.size(); ++id) {
+    const Cell& cell = cells_[id];
+    if (cell.state != State::Live) continue;
+    index[id] = m++;
+    const Mask all = (c_.p >= 6 ? ~Mask(0) : (Mask(1) << classes) - 1);
+    const Mask node = all & ~(excluded(cell.box) | excluded(cell.origin)) & ~cell.empty;
+    if (node & ~cell.connected) {
+      for (int s = 0; s < classes; ++s)
+        if ((node & ~cell.connected) >> s & 1)
+          upper_open_ = "the piece of class " + std::to_string(s) + " of cell " +
+                        std::to_string(id) + " is not proved connected";
+      return -1;
+    }
+    nodes.push_back(node);
+  }
+  std::vector<UnionFind> uf(classes);
+  for (UnionFind& u : uf) u.reset(size_t(m));
+  for (const auto& e : joined_)
+    for (int s = 0; s < classes; ++s)
+      if ((e.second >> s & 1) && (nodes[index[e.first.first]] >> s & 1) &&
+          (nodes[index[e.first.second]] >> s & 1))
+        uf[s].unite(int(index[e.first.first]), int(index[e.first.second]));
+  long bound = 0;
+  for (int s = 0; s < classes; ++s)
+    for (long i = 0; i < m; ++i)
+      if ((nodes[i] >> s & 1) && uf[s].find(int(i)) == int(i)) ++bound;
+  return bound;
+}
+
+void CountCheck::every_cell_made() {
+  for (const Cell& cell : cells_)
+    if (cell.state == State::Unmade || cell.state == State::Pending)
+      reject("count: a cell announced is never made, or a half never given its box");
+}
+
 void CountCheck::run() {
   if (c_.p > kMaxCountFactors) reject("a count certificate has at most 6 factors");
   for (const Factor& f : c_.factors)
@@ -692,23 +1149,23 @@ void CountCheck::run() {
     else if (k == "none") none();
     else if (k == "split") split();
     else if (k == "piece") piece();
-    else if (k == "refuted") {
-      last_id_ = long(cells_.size());  // no cell record after the refutations
-      refuted();
+    else if (k == "refuted" || k == "joined") {
+      if (last_id_ < long(cells_.size())) every_cell_made();
+      last_id_ = long(cells_.size());  // no cell record after the adjacencies
+      if (k == "refuted") refuted();
+      else joined();
     } else malformed(rec(), "unknown count record '" + k + "'");
   }
-  for (const Cell& cell : cells_)
-    if (cell.state == State::Unmade || cell.state == State::Pending)
-      reject("count: a cell announced is never made, or a half never given its box");
+  every_cell_made();
   finish();
   const int64_t claim = c_.rd.require({"claim", "count-lower"}, 1).integer();
   const long claim_rec = rec();
   if (claim < 0) malformed(rec(), "negative lower bound");
   c_.rd.expect({"claim", "count-upper"}, 1);
-  const std::string_view upper = c_.rd.word();
-  // This format records no proof of connectedness or of a join (FORMAT.md): an upper bound
-  // cannot be verified, so a claimed one is refused.
-  if (upper != "none") reject("claimed upper bound " + std::string(upper) + " is not verified: the certificate holds no proof of connected pieces and joins");
+  const long upper_rec = rec();
+  const std::string upper(c_.rd.word());
+  const int64_t upper_claim = upper == "none" ? -1 : parse_int(upper, rec());
+  if (upper != "none" && upper_claim < 0) malformed(rec(), "negative upper bound");
   const int64_t records = c_.rd.expect({"end"}, 1).integer();
   if (records != rec() - 1) malformed(rec(), "end: wrong record count");
   c_.rd.expect_eof();
@@ -720,6 +1177,14 @@ void CountCheck::run() {
   if (claim > c_.out.recomputed)
     rejected(claim_rec, "claimed lower bound " + std::to_string(claim) + " exceeds the recomputed " +
                             std::to_string(c_.out.recomputed));
+  if (upper_claim >= 0) {
+    // Printed only when every piece's connectedness and every join is verified here.
+    const long u = upper_bound();
+    if (u < 0) rejected(upper_rec, "claimed upper bound " + upper + " is not proved: " + upper_open_);
+    if (upper_claim < u)
+      rejected(upper_rec, "claimed upper bound " + upper + " is below the recomputed " + std::to_string(u));
+    c_.out.count_upper = u;
+  }
   c_.out.outcome = Outcome::Verified;
 }
 

@@ -45,7 +45,7 @@ bool invert(std::vector<double>& M, int n, std::vector<double>& inv) {  // M is 
 
 // Determinant by cofactor expansion along the first row (MPFI throughout); for n > 6 (n!
 // products) the entire line, so that no sign is proved.
-static void det(const std::vector<Ival>& M, int n, Ival& out) {
+void det(const std::vector<Ival>& M, int n, Ival& out) {
   if (n > 6) return out.entire();
   if (n == 1) {
     out = M[0];

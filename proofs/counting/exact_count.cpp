@@ -53,6 +53,7 @@ struct PieceRec {
   // For the certificate: why it is empty, or a point of W_s in the box (u empty: none).
   CountCellRecord::EmptyBy empty_by = CountCellRecord::NotEmpty;
   ClassPoint point;
+  CountCellRecord::ConnectedBy connected_by = CountCellRecord::NotConnected;
 };
 
 struct Cell {
@@ -78,6 +79,10 @@ struct ClassEdge {
   uint32_t cls;
   AdjacencyState state = AdjacencyState::Undecided;
   bool tried = false;
+  // For the certificate, when joined: the shift, and the point or the bridge's chart.
+  std::vector<int> shift;
+  ClassPoint point;
+  Chart bridge;
 };
 
 struct Adj {
@@ -374,7 +379,8 @@ class Counter {
       for (uint32_t s : classes)
         c.pieces.push_back({s, s == cls ? PieceState::Connected : PieceState::Empty,
                             OpenReason::NoPoint,
-                            s == cls ? CountCellRecord::NotEmpty : CountCellRecord::Signs});
+                            s == cls ? CountCellRecord::NotEmpty : CountCellRecord::Signs,
+                            ClassPoint{}, CountCellRecord::Graph});
       return;
     }
     if (c.solution) {
@@ -388,7 +394,7 @@ class Counter {
           c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
                               OpenReason::NoPoint,
                               t == s ? CountCellRecord::NotEmpty : CountCellRecord::OtherClass,
-                              t == s ? pt : ClassPoint{}});
+                              t == s ? pt : ClassPoint{}, CountCellRecord::Graph});
         return;
       }
       for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
@@ -414,7 +420,8 @@ class Counter {
       const bool star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{},
                                   ws_, star_boxes_) == StarVerdict::StarShaped;
       c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
-                          OpenReason::NotStar, CountCellRecord::NotEmpty, centre});
+                          OpenReason::NotStar, CountCellRecord::NotEmpty, centre,
+                          star ? CountCellRecord::Star : CountCellRecord::NotConnected});
       if (!star) c.split_in = chart.u;
     }
   }
@@ -493,7 +500,7 @@ class Counter {
   }
 
   // ----- adjacencies
-  AdjacencyState try_join(const Adj& e, uint32_t cls) {
+  AdjacencyState try_join(const Adj& e, uint32_t cls, ClassEdge& proof) {
     Box face;
     for (const std::vector<int>& k : e.shifts) {
       if (!inner_meet(cells_[e.a].box, cells_[e.b].box, k, face)) continue;
@@ -506,8 +513,11 @@ class Counter {
       });
       ClassPoint pt;
       for (const std::vector<int>& w : charts)
-        if (find_class_point(ev_, fg_, face, w, cls, ws_, pt, 3) == PointVerdict::Found)
+        if (find_class_point(ev_, fg_, face, w, cls, ws_, pt, 3) == PointVerdict::Found) {
+          proof.shift = k;
+          proof.point = pt;
           return AdjacencyState::Joined;
+        }
     }
     // Boxes that meet only at a corner of the graph leave no room for a witness: a bridge
     // instead. With C the hull of both boxes, a chart on C makes V ∩ C a graph over U_C;
@@ -521,13 +531,15 @@ class Counter {
         shifted(cells_[e.b].box[v].lo_down(), cells_[e.b].box[v].hi_up(), k[v], lo, hi);
         hull[v].set_hull(std::min(lo, hull[v].lo_down()), std::max(hi, hull[v].hi_up()));
       }
-      if (bridged(hull, cls)) return AdjacencyState::Joined;
+      if (bridged(hull, cls, proof.bridge)) {
+        proof.shift = k;
+        return AdjacencyState::Joined;
+      }
     }
     return AdjacencyState::Undecided;
   }
 
-  bool bridged(const Box& hull, uint32_t cls) {
-    Chart chart;
+  bool bridged(const Box& hull, uint32_t cls, Chart& chart) {
     std::vector<Interval> values;
     for (const std::vector<int>& w : chart_candidates(ev_, hull)) {
       if (prove_chart(ev_, hull, w, ws_, chart) != ChartVerdict::Proved) continue;
@@ -616,7 +628,7 @@ class Counter {
       if (g.piece_state(x) != PieceState::Connected || g.piece_state(y) != PieceState::Connected)
         continue;
       ce.tried = true;
-      ce.state = try_join(adj_[r.adj], ce.cls);
+      ce.state = try_join(adj_[r.adj], ce.cls, ce);
       if (ce.state == AdjacencyState::Undecided) ce.state = try_refute(adj_[r.adj], ce.cls);
       g.set_adjacency_state(r.edge, ce.state);
       if (ce.state == AdjacencyState::Joined) h.union_set(x, y);
@@ -745,7 +757,7 @@ class Counter {
       r.child[0] = c.child[0], r.child[1] = c.child[1];
       r.alive = c.alive;
       for (const PieceRec& pr : c.pieces) {
-        CountCellRecord::Piece q{pr.cls, pr.state, pr.empty_by, {}, {}, {}};
+        CountCellRecord::Piece q{pr.cls, pr.state, pr.empty_by, pr.connected_by, {}, {}, {}};
         if (!pr.point.u.empty()) {
           q.point_w = pr.point.w_vars;
           q.point_u = pr.point.u;
@@ -766,7 +778,20 @@ class Counter {
     for (const Adj& e : adj_)
       if (cells_[e.a].alive && cells_[e.b].alive)
         for (const ClassEdge& ce : e.classes)
-          if (ce.state == AdjacencyState::Refuted) out->refuted.push_back({e.a, e.b, ce.cls});
+          if (ce.state == AdjacencyState::Refuted) {
+            out->refuted.push_back({e.a, e.b, ce.cls});
+          } else if (ce.state == AdjacencyState::Joined) {
+            CountRecords::Joined j{e.a, e.b, ce.cls, ce.shift, ce.point.u.empty(), {}, {}, {}, {}};
+            if (!j.bridge) {
+              j.w = ce.point.w_vars;
+              j.u = ce.point.u;
+              j.hint = pairs(ce.point.w);
+            } else {
+              j.w = ce.bridge.w;
+              j.w_tilde = pairs(ce.bridge.w_tilde);
+            }
+            out->joined.push_back(std::move(j));
+          }
     return out;
   }
 

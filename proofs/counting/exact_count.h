@@ -41,10 +41,14 @@ struct CountCellRecord {
   bool alive = true;
   // The pieces of an alive cell, with what shows each nonempty one (a u-point of W_s).
   enum EmptyBy : uint8_t { NotEmpty, Signs, NoPoint, Paving, OtherClass };
+  // Connected: the whole graph over U (a solution box, or a chart whose range lies in the
+  // box with every factor of one sign), or star-shaped about its point.
+  enum ConnectedBy : uint8_t { NotConnected, Graph, Star };
   struct Piece {
     uint32_t cls;
     PieceState state;
     EmptyBy empty_by = NotEmpty;
+    ConnectedBy connected_by = NotConnected;
     std::vector<int> point_w;         // a point of W_s in the box: its chart's w,
     std::vector<double> point_u;      // the u-point (n, the chart's u in model order)
     std::vector<double> point_hint;   // and an enclosure of w there (n lo/hi pairs)
@@ -60,6 +64,18 @@ struct CountRecords {
     uint32_t cls;
   };
   std::vector<Refuted> refuted;  // adjacencies refuted, alive cells only
+  // Adjacencies joined, alive cells only: a point of W_s in a ∩ (b + 2πk) (w, u, hint as a
+  // piece's point), or a bridge: a chart (w, its iterate W̃) on the hull of a and b + 2πk.
+  struct Joined {
+    int32_t a, b;
+    uint32_t cls;
+    std::vector<int> shift;  // k per variable
+    bool bridge = false;
+    std::vector<int> w;
+    std::vector<double> u, hint;  // the point (bridge: empty)
+    std::vector<double> w_tilde;  // the bridge's W̃ (n lo/hi pairs)
+  };
+  std::vector<Joined> joined;
 };
 
 struct AspectsResult;
