@@ -68,7 +68,11 @@ int run_count(const CountOptions& o) {
   if (o.progress || isatty(2)) cfg.progress = progress_line;
   std::unique_ptr<CountCertificateWriter> cert;
   if (!o.cert.empty()) {
-    cert.reset(new CountCertificateWriter(o.cert, m, o.eps));
+    try {
+      cert.reset(new CountCertificateWriter(o.cert, m, o.eps));
+    } catch (const std::runtime_error& e) {  // an unwritable place: the option is wrong
+      throw UsageError(std::string("--cert: ") + e.what());
+    }
     cfg.certificate = cert->first_cover();
     cfg.first_cover_done = &CountCertificateWriter::first_cover_done;
     cfg.first_cover_data = cert.get();
