@@ -30,7 +30,7 @@ class CountCheck {
   struct Cell {
     State state = State::Unmade;
     Box origin, box;             // as created; now (after its chart)
-    bool solution = false;       // an S record's output box, unchanged
+    bool solution = false;       // made from an S record's output box
     std::vector<int> w;          // its chart (fit), for a paving or a star test
     Box w_tilde;
     std::vector<Ival> range;     // the chart's image: every w(u), u ∈ U, lies in it
@@ -47,10 +47,10 @@ class CountCheck {
   long first_ = 0;
   long last_id_ = -1;
   std::vector<Cell> cells_;
-  std::map<std::pair<long, long>, Mask> refuted_, joined_;
+  std::map<std::pair<long, long>, Mask> refuted_, joined_;  // verified, per pair of cells
+  std::string upper_open_;  // why no upper bound, when none is proved
   // The star test's second derivatives: a copy of the model with the nodes of its Jacobian
   // (derivative.cpp), and an evaluator of them, made on first use.
-  std::string upper_open_;  // why no upper bound, when none is proved
   std::unique_ptr<Model> dm_;
   std::unique_ptr<Evaluator> dev_;
   std::vector<std::vector<int>> jn_;
@@ -711,14 +711,18 @@ long CountCheck::lower_bound() {
   std::vector<UnionFind> uf(classes);
   for (UnionFind& u : uf) u.reset(m);
   PlainSweep M(F, c_.periodic, c_.ev->two_pi);
-  M.run([&](int i, int j) {
+  try {
+    M.run([&](int i, int j) {
     const long a = std::min(ids[i], ids[j]), b = std::max(ids[i], ids[j]);
     auto r = refuted_.find({a, b});
     const Mask cut = r == refuted_.end() ? 0 : r->second;
     const Mask both = nodes[i] & nodes[j] & ~cut;
     for (int s = 0; s < classes; ++s)
       if ((both >> s) & 1) uf[s].unite(i, j);
-  }, (size_t(1) << 22) + 64 * m);
+    }, (size_t(1) << 22) + 64 * m);
+  } catch (const std::length_error&) {
+    reject("the neighbourhood graph has more than 2^22 + 64 pairs per box");
+  }
   long bound = 0;
   for (int s = 0; s < classes; ++s) {
     std::vector<uint8_t> counted(m, 0);
