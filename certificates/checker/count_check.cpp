@@ -85,7 +85,9 @@ class CountCheck {
   Mask excluded(const std::vector<Ival>& b);
   bool point(const Box& box, const std::vector<int>& w, const std::vector<double>& u,
              const Box& hint, Mask cls, std::vector<Ival>* at = nullptr);
+  bool narrow_w(const Cell& cell, std::vector<Ival>& b);
   bool paving(const Cell& cell, Mask cls);
+  bool crosses(const Cell& cell, int j, bool upper);
   bool graph(const Cell& cell, Mask cls);
   bool star(const Cell& cell, Mask cls, const std::vector<int>& w, const std::vector<double>& v,
             const Box& hint);
@@ -282,6 +284,15 @@ bool CountCheck::point(const Box& box, const std::vector<int>& w, const std::vec
     bool inside_x = true;
     for (int j = 0; j < n_; ++j) inside_x = inside_x && inside(y[j], X[2 * j], X[2 * j + 1], true);
     if (inside_x) {
+      // The zero is unique in X and lies in y: further steps on y enclose it more tightly
+      // (a first image from a wide hint can be too wide for the box).
+      std::vector<Ival> y2;
+      for (int again = 0; again < 8; ++again) {
+        for (int j = 0; j < n_; ++j) b[w[j]] = y[j];
+        if (hansen_sengupta(b, w, y2) != Hs::Image) break;
+        for (int j = 0; j < n_; ++j)
+          if (!y[j].meet(y2[j])) return false;
+      }
       for (int j = 0; j < n_; ++j) {
         const int v = w[j];
         if (!inside(y[j], box[2 * v], box[2 * v + 1], false)) return false;
@@ -304,6 +315,30 @@ bool CountCheck::point(const Box& box, const std::vector<int>& w, const std::vec
 // W_s ∩ box = ∅ by a paving of the chart's U: on each part, every zero of the cell's box
 // has its w in W̃ (box_w ⊆ W̃) and so in W̃ ∩ y ∩ box_w (Hansen–Sengupta); a part is cleared
 // when that is empty or a factor's enclosure over it excludes the class.
+// b's w := an enclosure of w(u) for every u of b's u-part (the cell's chart): W̃ ∩ the chart's
+// range, met with the step's images on b (up to six, while each halves it). False when that
+// is empty: no solution of the chart over the part.
+bool CountCheck::narrow_w(const Cell& cell, std::vector<Ival>& b) {
+  const std::vector<int>& w = cell.w;
+  for (int j = 0; j < n_; ++j) {
+    b[w[j]].set(cell.w_tilde[2 * j], cell.w_tilde[2 * j + 1]);
+    if (!b[w[j]].meet(cell.range[j])) return false;
+  }
+  std::vector<Ival> y;
+  for (int sweep = 0; sweep < 6; ++sweep) {
+    double before = 0, after = 0;
+    for (int j = 0; j < n_; ++j) before += b[w[j]].hi() - b[w[j]].lo();
+    const Hs h = hansen_sengupta(b, w, y);
+    if (h == Hs::Empty) return false;
+    if (h != Hs::Image) break;
+    for (int j = 0; j < n_; ++j)
+      if (!b[w[j]].meet(y[j])) return false;
+    for (int j = 0; j < n_; ++j) after += b[w[j]].hi() - b[w[j]].lo();
+    if (!(after < 0.5 * before)) break;
+  }
+  return true;
+}
+
 bool CountCheck::paving(const Cell& cell, Mask cls) {
   if (cell.w.empty()) return false;
   std::vector<int> uv;
@@ -317,19 +352,15 @@ bool CountCheck::paving(const Cell& cell, Mask cls) {
     stack.pop_back();
     if (++parts > 4096) return false;
     std::vector<Ival> b = ivals(z);
-    for (int j = 0; j < n_; ++j) b[cell.w[j]].set(cell.w_tilde[2 * j], cell.w_tilde[2 * j + 1]);
-    const Hs h = hansen_sengupta(b, cell.w, y);
-    if (h == Hs::Empty) continue;
+    if (!narrow_w(cell, b)) continue;
     bool cleared = false;
-    if (h == Hs::Image) {
-      for (int j = 0; j < n_ && !cleared; ++j) {
-        const int v = cell.w[j];
-        Ival box_w;
-        box_w.set(z[2 * v], z[2 * v + 1]);
-        cleared = !b[v].meet(y[j]) || !b[v].meet(box_w);
-      }
-      if (!cleared) cleared = (excluded(b) >> cls) & 1;
+    for (int j = 0; j < n_ && !cleared; ++j) {
+      const int v = cell.w[j];
+      Ival box_w;
+      box_w.set(z[2 * v], z[2 * v + 1]);
+      cleared = !b[v].meet(box_w);
     }
+    if (!cleared) cleared = (excluded(b) >> cls) & 1;
     if (cleared) continue;
     int best = -1;
     double rel = 1e-9;
@@ -478,10 +509,22 @@ void CountCheck::fit(bool void_only) {
     // B_v ⊇ origin_v ∩ H_j (∩ the root cell's v if it is not periodic): each end of the
     // meet is one of the ends it is the max (min) of.
     const bool dom = !c_.periodic[v];
-    const bool lo_ok = B[2 * v] <= cell.origin[2 * v] || cmp(y[j], Lo, B[2 * v]) >= 0 ||
-                       (dom && B[2 * v] <= c_.root[2 * v]);
-    const bool hi_ok = B[2 * v + 1] >= cell.origin[2 * v + 1] || cmp(y[j], Hi, B[2 * v + 1]) <= 0 ||
-                       (dom && B[2 * v + 1] >= c_.root[2 * v + 1]);
+    bool lo_ok = B[2 * v] <= cell.origin[2 * v] || cmp(y[j], Lo, B[2 * v]) >= 0 ||
+                 (dom && B[2 * v] <= c_.root[2 * v]);
+    bool hi_ok = B[2 * v + 1] >= cell.origin[2 * v + 1] || cmp(y[j], Hi, B[2 * v + 1]) <= 0 ||
+                 (dom && B[2 * v + 1] >= c_.root[2 * v + 1]);
+    // Else the solver's image and this one differ at that end in the last bits: the closed
+    // slab of the origin beyond BOX's end is refuted instead (it holds no solution).
+    Box slab = cell.origin;
+    if (!lo_ok && B[2 * v] <= cell.origin[2 * v + 1]) {
+      put(slab, v, cell.origin[2 * v], B[2 * v]);
+      lo_ok = refute(slab);
+    }
+    slab = cell.origin;
+    if (!hi_ok && B[2 * v + 1] >= cell.origin[2 * v]) {
+      put(slab, v, B[2 * v + 1], cell.origin[2 * v + 1]);
+      hi_ok = refute(slab);
+    }
     // An empty meet: the origin holds no solution, any box will do.
     const bool empty_meet = cmp(y[j], Lo, cell.origin[2 * v + 1]) > 0 ||
                             cmp(y[j], Hi, cell.origin[2 * v]) < 0;
@@ -747,15 +790,33 @@ bool CountCheck::inside_root(const Box& b) const {
   return true;
 }
 
+// The graph of the cell's chart may cross the lower (upper) face of its box's w_j: the chart's
+// image reaches beyond it, and the closed slab of U × (W̃ ∩ image) beyond the face is not
+// refuted (the solver's image and the checker's differ in the last bits at such an end).
+bool CountCheck::crosses(const Cell& cell, int j, bool upper) {
+  const int v = cell.w[j];
+  const double face = cell.box[2 * v + upper];
+  if (upper ? cmp(cell.range[j], Hi, face) <= 0 : cmp(cell.range[j], Lo, face) >= 0) return false;
+  Box slab = cell.box;
+  for (int k = 0; k < n_; ++k) {
+    Ival x;
+    x.set(cell.w_tilde[2 * k], cell.w_tilde[2 * k + 1]);
+    if (!x.meet(cell.range[k])) return false;  // no solution at all
+    put(slab, cell.w[k], x.lo(), x.hi());
+  }
+  if (upper ? face >= slab[2 * v + 1] : face <= slab[2 * v]) return true;
+  if (upper) slab[2 * v] = face;
+  else slab[2 * v + 1] = face;
+  return !refute(slab);
+}
+
 // A fit's box whose chart's image lies in its w, inside the root cell, every factor of the
 // class's sign on it: W_s ∩ box = V ∩ box is the graph of the continuous w over U, connected
 // and nonempty.
 bool CountCheck::graph(const Cell& cell, Mask cls) {
   if (cell.w.empty() || !inside_root(cell.box)) return false;
-  for (int j = 0; j < n_; ++j) {
-    const int v = cell.w[j];
-    if (!inside(cell.range[j], cell.box[2 * v], cell.box[2 * v + 1], false)) return false;
-  }
+  for (int j = 0; j < n_; ++j)
+    if (crosses(cell, j, false) || crosses(cell, j, true)) return false;
   std::vector<Ival> g;
   if (!factors(ivals(cell.box), g)) return false;
   for (int i = 0; i < c_.p; ++i)
@@ -897,9 +958,8 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
   for (int i = 0; i < c_.p; ++i)
     if (!on_box || g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) cs.push_back({0, i});
   for (int j = 0; j < n_; ++j) {
-    const int x = w[j];
-    if (cmp(cell.range[j], Lo, cell.box[2 * x]) < 0) cs.push_back({1, j});
-    if (cmp(cell.range[j], Hi, cell.box[2 * x + 1]) > 0) cs.push_back({2, j});
+    if (crosses(cell, j, false)) cs.push_back({1, j});
+    if (crosses(cell, j, true)) cs.push_back({2, j});
   }
   // The centre: a point of the piece with every constraint > 0 there.
   std::vector<Ival> wv;
@@ -920,22 +980,7 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
     if (++parts > 8192) return false;
     // w over the part: in W̃ (unique) and in every image of the step on part × (W̃ ∩ ...).
     std::vector<Ival> b = ivals(z);
-    for (int j = 0; j < n_; ++j) {
-      b[w[j]].set(cell.w_tilde[2 * j], cell.w_tilde[2 * j + 1]);
-      b[w[j]].meet(cell.range[j]);
-    }
-    bool empty = false;
-    for (int sweep = 0; sweep < 6 && !empty; ++sweep) {
-      double before = 0, after = 0;
-      for (int j = 0; j < n_; ++j) before += b[w[j]].hi() - b[w[j]].lo();
-      const Hs h = hansen_sengupta(b, w, y);
-      if (h == Hs::Empty) empty = true;
-      if (h != Hs::Image) break;
-      for (int j = 0; j < n_ && !empty; ++j) empty = !b[w[j]].meet(y[j]);
-      for (int j = 0; j < n_ && !empty; ++j) after += b[w[j]].hi() - b[w[j]].lo();
-      if (!(after < 0.5 * before)) break;
-    }
-    if (empty) continue;  // no point of the graph over this part
+    if (!narrow_w(cell, b)) continue;  // no point of the graph over this part
     const bool defined = factors(b, g);
     bool negative = false, strict_can_be_positive = true;
     for (size_t k = 0; k < cs.size(); ++k) {
