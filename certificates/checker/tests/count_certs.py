@@ -29,6 +29,7 @@ CASES = [
     ("parabola", os.path.join(MODELS, "count_parabola.robot"), "0.5", 2),
     ("bow_tie_neck", os.path.join(MODELS, "count_bow_tie_neck.robot"), "0.5", 3),
     ("bow_tie_pinch", os.path.join(MODELS, "count_bow_tie_pinch.robot"), "0.5", 3),
+    ("seam", os.path.join(MODELS, "count_seam.robot"), "0.5", 2),
 ]
 
 
@@ -141,6 +142,15 @@ def join_forged(lines):
     assert a < b and (a, b) not in have
     lines.insert(first(lines, lambda f: f[0] == "claim"),
                  " ".join(["joined", str(a), str(b)] + donor[3:]))
+    return lines
+
+
+def join_unshifted(lines):
+    # A join across the seam of a periodic variable claimed without its 2*pi shift.
+    i = first(lines, lambda f: f[0] == "joined" and f[4].strip("0") != "")
+    f = lines[i].split(" ")
+    f[4] = "0" * len(f[4])
+    lines[i] = " ".join(f)
     return lines
 
 
@@ -267,6 +277,7 @@ TAMPER = [
     ("prrp", join_dropped, "below the recomputed"),
     ("prrp", join_point_moved, "joined"),
     ("cubic", join_forged, "joined"),
+    ("seam", join_unshifted, "joined"),
     ("prrp", star_centre_moved, "point"),
     ("cubic_wide", unsplit, "star-shaped test fails"),
     ("prrp", star_without_test, "graph"),
