@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
@@ -94,7 +93,7 @@ void CountCertificateWriter::first_cover_done(const AspectsResult& solved, void*
   w->first_done_ = true;
 }
 
-void CountCertificateWriter::finish(const Model& model, const CountResult& r) {
+void CountCertificateWriter::finish(const Model&, const CountResult& r) {
   if (!first_done_ || !r.records)
     throw std::runtime_error("count certificate: the count stopped before its first cover");
   const CountRecords& rec = *r.records;
@@ -126,8 +125,6 @@ void CountCertificateWriter::finish(const Model& model, const CountResult& r) {
   Lines out(text);
   out.count_existing(lines);
   const int p = int(r.factor_text.size());
-  const int nv = int(model.vars.size());
-  (void)nv;
   out.word("count").integer(long(rec.cells.size())).integer(rec.first_cover).end();
   for (size_t id = 0; id < rec.cells.size(); ++id) {
     const CountCellRecord& c = rec.cells[id];
