@@ -1,6 +1,6 @@
 // check.h — trusted core: the state of one check and its record rules, shared by
 // check.cpp (the header records, the claims, the whole run), tree.cpp (the search tree and
-// its leaves), sections.cpp (links, CSNCs, witnesses) and count_check.cpp (a count
+// its leaves), sections.cpp (links, CSNCs, witnesses) and count_check.h (a count
 // certificate's records after its tree). It keeps only what later
 // sections need: the output boxes as doubles with their claimed signs (each proved), the
 // union-find of the links and the CSNC of each box.

@@ -4,9 +4,9 @@
 // --trusted-only: the reader (cert_reader.cpp, compressed_input.cpp), the model parser
 // (model.cpp), MPFI intervals (interval.cpp), the evaluator (eval.cpp), the proofs on one box
 // (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp, sections.cpp), the graph M
-// with the bound (bound.cpp), and a count certificate's records (count_check.cpp, with the
-// Jacobian of f as DAG nodes for the second derivatives: derivative.cpp): MPFI, MPFR and
-// GMP its only arithmetic. The optional speed
+// with the bound (bound.cpp), and a count certificate's records (count_check.h: count_check.cpp,
+// count_proofs.cpp, count_connected.cpp, with the Jacobian of f as DAG nodes for the second
+// derivatives: derivative.cpp): MPFI, MPFR and GMP its only arithmetic. The optional speed
 // layer, tested against the core: speed.h (proofs on T threads and P ranks, the strip
 // sweep of M), intervals of doubles at 53 bits (interval_doubles.h/.cpp), and incremental
 // evaluation and the ends of sin, cos, asin and acos from Arb (eval_speed.cpp). The command

@@ -1,7 +1,7 @@
 // derivative.cpp — trusted core: the Jacobian of f as nodes of the model's DAG, by the
 // classical rules of differentiation, so that the evaluator's forward-mode AD (eval_ad) on
 // those nodes encloses the second derivatives of f: the gradients of the determinant
-// factors that a count certificate's star test needs (count_check.cpp). min, max and abs
+// factors that a count certificate's star test needs (count_connected.cpp). min, max and abs
 // have no rule (where they matter, the Jacobian entry is −1 and the star test fails), and
 // every rule's expression is undefined exactly where the AD of eval.cpp fails (a square root
 // at 0, a pole), so an enclosure is proved only where the derivative exists.
