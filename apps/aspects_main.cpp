@@ -104,6 +104,8 @@ void add_count(CLI::App& app, Commands& c) {
       ->default_val(0);
   count->add_flag("--json", co.json, "print one JSON object");
   count->add_flag("--progress", co.progress, "progress on stderr even when it is not a terminal");
+  count->add_option("--cert", co.cert,
+                    "write the count's certificate to FILE (check it with check_cert)");
 }
 
 void add_verify(CLI::App& app, Commands& c) {

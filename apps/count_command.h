@@ -15,6 +15,7 @@ struct CountOptions {
   int threads = 0;
   bool json = false;
   bool progress = false;
+  std::string cert;  // --cert FILE: the count's certificate (certificates/FORMAT.md)
 };
 
 // Exit status: 0 when the run finished (exact or not: the line says which), 3 when a time

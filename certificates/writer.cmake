@@ -3,6 +3,7 @@ find_package(OpenSSL REQUIRED)
 find_package(zstd REQUIRED)  # Debian: libzstd-dev
 add_library(aspects_cert_writer STATIC ${PROJECT_SOURCE_DIR}/certificates/certificate_writer.cpp
             ${PROJECT_SOURCE_DIR}/certificates/compact_records.cpp
+            ${PROJECT_SOURCE_DIR}/certificates/count_certificate.cpp
             ${PROJECT_SOURCE_DIR}/certificates/compressed_output.cpp
             ${PROJECT_SOURCE_DIR}/certificates/hashing_output.cpp)
 target_include_directories(aspects_cert_writer PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/certificates>)

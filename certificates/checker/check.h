@@ -1,6 +1,7 @@
 // check.h — trusted core: the state of one check and its record rules, shared by
 // check.cpp (the header records, the claims, the whole run), tree.cpp (the search tree and
-// its leaves) and sections.cpp (links, CSNCs, witnesses). It keeps only what later
+// its leaves), sections.cpp (links, CSNCs, witnesses) and count_check.h (a count
+// certificate's records after its tree). It keeps only what later
 // sections need: the output boxes as doubles with their claimed signs (each proved), the
 // union-find of the links and the CSNC of each box.
 #pragma once
@@ -172,6 +173,9 @@ struct Checker {
   bool well_formed(std::string_view s) const;
   void store(std::string_view s, const double* box, bool solution);
   std::string signs_proved(Prover& pr, const std::string& s, bool jac) const;
+  // A count certificate (count_check.cpp): its records after the tree, and its claims.
+  bool count = false;
+  void count_body();
   // The sections after the tree: links, CSNCs, witnesses (sections.cpp).
   std::vector<int> shifts();
   std::pair<double, double> inner(long a, long b, int v, int k);

@@ -3,8 +3,10 @@
 // with core/ or proofs/. The trusted core, which alone decides a verdict under
 // --trusted-only: the reader (cert_reader.cpp, compressed_input.cpp), the model parser
 // (model.cpp), MPFI intervals (interval.cpp), the evaluator (eval.cpp), the proofs on one box
-// (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp, sections.cpp) and the graph M
-// with the bound (bound.cpp): MPFI, MPFR and GMP its only arithmetic. The optional speed
+// (proofs.cpp), the record rules (check.h: check.cpp, tree.cpp, sections.cpp), the graph M
+// with the bound (bound.cpp), and a count certificate's records (count_check.h: count_check.cpp,
+// count_proofs.cpp, count_connected.cpp, with the Jacobian of f as DAG nodes for the second
+// derivatives: derivative.cpp): MPFI, MPFR and GMP its only arithmetic. The optional speed
 // layer, tested against the core: speed.h (proofs on T threads and P ranks, the strip
 // sweep of M), intervals of doubles at 53 bits (interval_doubles.h/.cpp), and incremental
 // evaluation and the ends of sin, cos, asin and acos from Arb (eval_speed.cpp). The command
@@ -159,6 +161,8 @@ struct Verdict {
   long assembly = 0;                      // verified V records
   long claimed = -1, recomputed = -1, checked = -1;  // bounds: claimed, all factors, no user
   bool user_factors = false;
+  long count_cells = -1;  // a count certificate (count_check.cpp): boxes of its final cover
+  long count_upper = -1;  // its verified upper bound (-1: none claimed)
 };
 
 Verdict check_certificate(FILE* f, const CheckOptions& o);
@@ -361,13 +365,15 @@ class Prover {
   bool factor(const Factor& f, bool jac, Ival& out);
   // True when `box` provably holds no feasible solution of f = 0.
   bool refute();
+  // Narrows b around its feasible solutions (HC4, Hansen–Sengupta in the commands); false:
+  // b holds none.
+  bool contract(std::vector<Ival>& b);
   long refutations = 0, refute_boxes = 0;
 
  private:
   bool jacobians();
   const double* own_preconditioner(const std::vector<Ival>& J);
   bool dominant(const std::vector<Ival>& J, const double* C, const double* D);
-  bool contract(std::vector<Ival>& b);
   int hs_contract(std::vector<Ival>& b);
   bool refute_rec(std::vector<Ival>& b, int depth, int& budget);
   void product(const std::vector<Ival>& J, const double* C, std::vector<Ival>& out);
@@ -386,6 +392,16 @@ class Prover {
   std::vector<double> M_, own_, w1_, w2_;  // own_preconditioner(); contract()
   Ival t1_, t2_;
 };
+
+// An approximate inverse of the n×n matrix M (row major; M is spoilt) by Gauss–Jordan in
+// binary64 (proofs.cpp): a choice of preconditioner, never trusted. False when singular.
+bool invert(std::vector<double>& M, int n, std::vector<double>& inv);
+// The determinant of the n×n interval matrix M (row major) by cofactor expansion along the
+// first row (proofs.cpp); the entire line for n > 6.
+void det(const std::vector<Ival>& M, int n, Ival& out);
+// Appends to m the nodes of the Jacobian of its equations, ∂f_r/∂x_v as out[r][v] (−1 where
+// min, max or abs leave it without a rule): derivative.cpp.
+std::vector<std::vector<int>> jacobian_nodes(Model& m);
 
 // ---- The combinatorial half of the check (bound.cpp; fast_sweep.cpp): a union-find, the
 // neighbourhood graph M of FORMAT.md ("claim lower-bound") by sort-and-sweep over the output

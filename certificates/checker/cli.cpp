@@ -54,6 +54,10 @@ std::string text_line(const Verdict& v) {
        std::string(eps, std::to_chars(eps, eps + sizeof eps, v.eps).ptr);
   for (const Count& c : counts(v))
     if (c.in_text) s += std::string(" ") + c.name + "=" + std::to_string(c.value);
+  // A count certificate (FORMAT.md, "Count certificates"): its upper bound, verified, or none.
+  if (v.count_cells >= 0)
+    s += " cells=" + std::to_string(v.count_cells) + " upper_bound=" +
+         (v.count_upper >= 0 ? std::to_string(v.count_upper) : std::string("none"));
   s += " robot=" + nlohmann::json(v.robot).dump(-1, ' ', true);
   if (!v.reason.empty()) s += " (" + v.reason + ")";
   return s;
@@ -73,6 +77,10 @@ std::string json_line(const Verdict& v) {
     j["eps"] = v.eps;
     for (const Count& c : counts(v)) j[c.name] = c.value;
     j["user_factors"] = v.user_factors;
+    if (v.count_cells >= 0) {
+      j["cells"] = v.count_cells;
+      j["upper_bound"] = v.count_upper >= 0 ? nlohmann::json(v.count_upper) : nlohmann::json(nullptr);
+    }
   }
   return j.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
 }

@@ -12,7 +12,7 @@ namespace cc {
 
 // Approximate inverse of the n×n matrix M (row major) by Gauss–Jordan with partial
 // pivoting, in double. Only a heuristic choice: its result is never trusted.
-static bool invert(std::vector<double>& M, int n, std::vector<double>& inv) {  // M is spoilt
+bool invert(std::vector<double>& M, int n, std::vector<double>& inv) {  // M is spoilt
   inv.assign(size_t(n) * n, 0.0);
   for (int i = 0; i < n; ++i) inv[i * n + i] = 1;
   for (int c = 0; c < n; ++c) {
@@ -45,7 +45,7 @@ static bool invert(std::vector<double>& M, int n, std::vector<double>& inv) {  /
 
 // Determinant by cofactor expansion along the first row (MPFI throughout); for n > 6 (n!
 // products) the entire line, so that no sign is proved.
-static void det(const std::vector<Ival>& M, int n, Ival& out) {
+void det(const std::vector<Ival>& M, int n, Ival& out) {
   if (n > 6) return out.entire();
   if (n == 1) {
     out = M[0];

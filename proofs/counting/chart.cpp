@@ -146,6 +146,8 @@ ChartVerdict prove_chart(ModelEvaluator& ev, const Box& box, const std::vector<i
     }
     if (inside) {
       chart.w_range = y;
+      chart.w_tilde.clear();
+      for (int j = 0; j < n; ++j) chart.w_tilde.push_back(work[w[j]]);
       return ChartVerdict::Proved;
     }
     if (k == 0) first_width = width;

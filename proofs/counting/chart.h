@@ -26,6 +26,8 @@ enum class ChartVerdict : uint8_t {
 struct Chart {
   std::vector<int> u, w;              // variable indices (model order), n each
   std::vector<Interval> w_range;      // RANGE: w(U) lies in it (parallel to w)
+  std::vector<Interval> w_tilde;      // W̃: the iterate holding the box's W and RANGE in its
+                                      // interior (the unique w(u) of U is in it; certificate)
 };
 
 // u: the variables not in w, in model order.

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "aspects/neighborhood_graph.h"
+#include "checker_gap.h"
 #include "contractor.h"
 #include "counting/chart.h"
 #include "counting/class_point.h"
@@ -50,6 +51,10 @@ struct PieceRec {
   uint32_t cls;
   PieceState state;
   OpenReason why;
+  // For the certificate: why it is empty, or a point of W_s in the box (u empty: none).
+  CountCellRecord::EmptyBy empty_by = CountCellRecord::NotEmpty;
+  ClassPoint point;
+  CountCellRecord::ConnectedBy connected_by = CountCellRecord::NotConnected;
 };
 
 struct Cell {
@@ -65,12 +70,23 @@ struct Cell {
   // The variable whose bisection made it (-1: a box of the first cover). It does not grow
   // back across that cut: both halves of a w-part would grow to the same range.
   int8_t cut_var = -1;
+  // For the certificate: the box as created, the chart that changed it, the bisection.
+  Box origin;
+  CountCellRecord::Fit fit = CountCellRecord::NoFit;
+  Chart chart;
+  int split_var = -1;
+  double split_at = 0;
+  int32_t child[2] = {-1, -1};
 };
 
 struct ClassEdge {
   uint32_t cls;
   AdjacencyState state = AdjacencyState::Undecided;
   bool tried = false;
+  // For the certificate, when joined: the shift, and the point or the bridge's chart.
+  std::vector<int> shift;
+  ClassPoint point;
+  Chart bridge;
 };
 
 struct Adj {
@@ -98,12 +114,14 @@ class Counter {
   void add_first_cover(const AspectsResult& solved) {
     separation_bound_ = solved.separation.lower_bound;
     const OutputBoxes& R = solved.boxes;
+    first_cover_ = R.size();
     cells_.reserve(R.size());
     for (int i = 0; i < R.size(); ++i) {
       Cell c;
       c.box.resize(nv_);
       for (int v = 0; v < nv_; ++v) c.box[v].set_hull(R.lo(i, v), R.hi(i, v));
       c.solution = R.certified(i);
+      c.origin = c.box;
       cells_.push_back(std::move(c));
     }
     tree_ = solved.tree;
@@ -320,7 +338,9 @@ class Counter {
       }
     }
     if (cv == ChartVerdict::NoSolution) {
-      for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+      c.fit = CountCellRecord::NoSolution;
+      for (uint32_t s : classes)
+        c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint, CountCellRecord::NoPoint});
       return;
     }
     if (cv == ChartVerdict::Proved) {
@@ -343,8 +363,14 @@ class Counter {
     for (int j = 0; j < n; ++j) z[chart.w[j]] = chart.w_range[j];
     std::vector<StarConstraint> faces;
     bool inside = true;  // w(U) ⊆ W: the graph is over the whole of U
+    if (!c.solution) {
+      c.chart = chart;
+      c.fit = CountCellRecord::Charted;
+    }
     if (!fit_box_to_chart(c, chart, z, faces, inside)) {
-      for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+      c.fit = CountCellRecord::Void;
+      for (uint32_t s : classes)
+        c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint, CountCellRecord::NoPoint});
       return;
     }
     std::vector<Interval> zv;
@@ -356,7 +382,9 @@ class Counter {
       for (int i = 0; i < p; ++i) cls |= uint32_t(zv[i].certainly_pos()) << i;
       for (uint32_t s : classes)
         c.pieces.push_back({s, s == cls ? PieceState::Connected : PieceState::Empty,
-                            OpenReason::NoPoint});
+                            OpenReason::NoPoint,
+                            s == cls ? CountCellRecord::NotEmpty : CountCellRecord::Signs,
+                            ClassPoint{}, CountCellRecord::Graph});
       return;
     }
     if (c.solution) {
@@ -368,7 +396,9 @@ class Counter {
         if (points.find(s, ws_, pt) != PointVerdict::Found) continue;
         for (uint32_t t : classes)
           c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
-                              OpenReason::NoPoint});
+                              OpenReason::NoPoint,
+                              t == s ? CountCellRecord::NotEmpty : CountCellRecord::OtherClass,
+                              t == s ? pt : ClassPoint{}, CountCellRecord::Graph});
         return;
       }
       for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
@@ -377,7 +407,7 @@ class Counter {
     std::unique_ptr<ClassPointSearch> points;  // made when a class needs it
     for (uint32_t s : classes) {
       if (zdefined && class_empty(zv, s)) {
-        c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint});
+        c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint, CountCellRecord::Signs});
         continue;
       }
       ClassPoint centre;
@@ -385,7 +415,8 @@ class Counter {
       if (points->find(s, ws_, centre) != PointVerdict::Found) {
         const bool empty = prove_piece_empty(ev_, fg_, chart, z, s, ws_) == EmptyVerdict::Empty;
         c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
-                            OpenReason::NoPoint});
+                            OpenReason::NoPoint,
+                            empty ? CountCellRecord::Paving : CountCellRecord::NotEmpty});
         continue;
       }
       std::vector<StarConstraint> tests = faces;
@@ -395,7 +426,8 @@ class Counter {
       const bool star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{},
                                   ws_, star_boxes_) == StarVerdict::StarShaped;
       c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
-                          OpenReason::NotStar});
+                          OpenReason::NotStar, CountCellRecord::NotEmpty, centre,
+                          star ? CountCellRecord::Star : CountCellRecord::NotConnected});
       if (!star) c.split_in = chart.u;
     }
   }
@@ -475,7 +507,7 @@ class Counter {
   }
 
   // ----- adjacencies
-  AdjacencyState try_join(const Adj& e, uint32_t cls) {
+  AdjacencyState try_join(const Adj& e, uint32_t cls, ClassEdge& proof) {
     Box face;
     for (const std::vector<int>& k : e.shifts) {
       if (!inner_meet(cells_[e.a].box, cells_[e.b].box, k, face)) continue;
@@ -488,8 +520,11 @@ class Counter {
       });
       ClassPoint pt;
       for (const std::vector<int>& w : charts)
-        if (find_class_point(ev_, fg_, face, w, cls, ws_, pt, 3) == PointVerdict::Found)
+        if (find_class_point(ev_, fg_, face, w, cls, ws_, pt, 3) == PointVerdict::Found) {
+          proof.shift = k;
+          proof.point = pt;
           return AdjacencyState::Joined;
+        }
     }
     // Boxes that meet only at a corner of the graph leave no room for a witness: a bridge
     // instead. With C the hull of both boxes, a chart on C makes V ∩ C a graph over U_C;
@@ -503,13 +538,15 @@ class Counter {
         shifted(cells_[e.b].box[v].lo_down(), cells_[e.b].box[v].hi_up(), k[v], lo, hi);
         hull[v].set_hull(std::min(lo, hull[v].lo_down()), std::max(hi, hull[v].hi_up()));
       }
-      if (bridged(hull, cls)) return AdjacencyState::Joined;
+      if (bridged(hull, cls, proof.bridge)) {
+        proof.shift = k;
+        return AdjacencyState::Joined;
+      }
     }
     return AdjacencyState::Undecided;
   }
 
-  bool bridged(const Box& hull, uint32_t cls) {
-    Chart chart;
+  bool bridged(const Box& hull, uint32_t cls, Chart& chart) {
     std::vector<Interval> values;
     for (const std::vector<int>& w : chart_candidates(ev_, hull, domain_width_)) {
       if (prove_chart(ev_, hull, w, ws_, chart) != ChartVerdict::Proved) continue;
@@ -598,7 +635,7 @@ class Counter {
       if (g.piece_state(x) != PieceState::Connected || g.piece_state(y) != PieceState::Connected)
         continue;
       ce.tried = true;
-      ce.state = try_join(adj_[r.adj], ce.cls);
+      ce.state = try_join(adj_[r.adj], ce.cls, ce);
       if (ce.state == AdjacencyState::Undecided) ce.state = try_refute(adj_[r.adj], ce.cls);
       g.set_adjacency_state(r.edge, ce.state);
       if (ce.state == AdjacencyState::Joined) h.union_set(x, y);
@@ -689,8 +726,12 @@ class Counter {
         c.box[var].set_hull(mid, box[var].hi_up());
       SearchNode leaf;
       leaf.fate = LeafFate::Discarded;
-      if (!contractor_.contract(c.box)) {  // else no solution in this half
+      // With a gap (proofs/checker_gap.h): the certificate's checker refutes the closed
+      // slabs the contraction removed.
+      if (!gap_.contract(c.box)) {  // else no solution in this half
         c.node = first + half;
+        c.origin = c.box;
+        cells_[id].child[half] = int32_t(cells_.size());
         leaf.index = int32_t(cells_.size());
         leaf.fate = LeafFate::Undecided;
         cells_.push_back(std::move(c));
@@ -698,14 +739,83 @@ class Counter {
       tree_.push_back(leaf);
     }
     tree_[node].set_children(var, mid, first);
+    cells_[id].split_var = var;
+    cells_[id].split_at = mid;
     return true;
   }
+
+ public:
+  // The decisions as they stand, with what proves each (the certificate's count records).
+  std::shared_ptr<CountRecords> records() const {
+    auto out = std::make_shared<CountRecords>();
+    out->first_cover = first_cover_;
+    const int n = m_.n();
+    auto pairs = [](const Box& b) {
+      std::vector<double> v;
+      for (const Interval& x : b) v.push_back(x.lo_down()), v.push_back(x.hi_up());
+      return v;
+    };
+    for (const Cell& c : cells_) {
+      CountCellRecord r;
+      r.fit = c.fit;
+      r.origin = pairs(c.origin);
+      r.box = pairs(c.box);
+      if (c.fit == CountCellRecord::Charted || c.fit == CountCellRecord::Void) {
+        r.w = c.chart.w;
+        r.w_tilde = pairs(c.chart.w_tilde);
+      }
+      r.split_var = c.split_var;
+      r.split_at = c.split_at;
+      r.child[0] = c.child[0], r.child[1] = c.child[1];
+      r.alive = c.alive;
+      for (const PieceRec& pr : c.pieces) {
+        CountCellRecord::Piece q{pr.cls, pr.state, pr.empty_by, pr.connected_by, {}, {}, {}};
+        if (!pr.point.u.empty()) {
+          q.point_w = pr.point.w_vars;
+          q.point_u = pr.point.u;
+          q.point_hint = pairs(pr.point.w);
+        } else if (pr.state == PieceState::Connected && !c.solution &&
+                   c.fit == CountCellRecord::Charted) {
+          // The whole graph over U, in one class: any u of U is a point (its middle).
+          q.point_w = c.chart.w;
+          for (int u : c.chart.u) q.point_u.push_back(c.box[u].mid());
+          for (int j = 0; j < n; ++j)
+            q.point_hint.push_back(c.box[c.chart.w[j]].lo_down()),
+                q.point_hint.push_back(c.box[c.chart.w[j]].hi_up());
+        }
+        r.pieces.push_back(std::move(q));
+      }
+      out->cells.push_back(std::move(r));
+    }
+    for (const Adj& e : adj_)
+      if (cells_[e.a].alive && cells_[e.b].alive)
+        for (const ClassEdge& ce : e.classes)
+          if (ce.state == AdjacencyState::Refuted) {
+            out->refuted.push_back({e.a, e.b, ce.cls});
+          } else if (ce.state == AdjacencyState::Joined) {
+            CountRecords::Joined j{e.a, e.b, ce.cls, ce.shift, ce.point.u.empty(), {}, {}, {}, {}};
+            if (!j.bridge) {
+              j.w = ce.point.w_vars;
+              j.u = ce.point.u;
+              j.hint = pairs(ce.point.w);
+            } else {
+              j.w = ce.bridge.w;
+              j.w_tilde = pairs(ce.bridge.w_tilde);
+            }
+            out->joined.push_back(std::move(j));
+          }
+    return out;
+  }
+
+ private:
 
   Model& m_;
   const CountConfig& config_;
   const FactorGradients& fg_;
   ModelEvaluator ev_;
   EquationContractor contractor_;
+  CheckerGapContractor gap_{contractor_};
+  long first_cover_ = 0;
   HsWorkspace ws_;
   int nv_;
   Interval two_pi_;
@@ -736,7 +846,10 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   ac.threads = config.threads;
   ac.keep_link_proofs = false;
   ac.stop = config.stop;
+  ac.certificate = config.certificate;
+  ac.keep_link_proofs = config.certificate != nullptr;  // the writer's finish() needs them
   AspectsResult solved = compute_aspects(model, ac);
+  if (config.first_cover_done) config.first_cover_done(solved, config.first_cover_data);
   std::vector<int> nodes;
   for (const Factor& f : solved.factors) nodes.push_back(f.node);
   // The derivatives are added to the DAG before the counter's evaluator exists.
@@ -748,6 +861,7 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   std::vector<SearchNode>().swap(solved.tree);
   solved.boxes.release();
   CountResult out = counter.run();
+  if (config.certificate) out.records = counter.records();
   out.separation_bound = solved.separation.lower_bound;
   out.first_cover_boxes = first_cover_boxes;
   for (const Factor& f : solved.factors) out.factor_text.push_back(f.text + " (" + f.origin + ")");

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,66 @@
 #include "search/stop_condition.h"
 
 namespace aspects {
+
+// What proves each decision of a count, for its certificate (certificates/FORMAT.md,
+// "Count certificates"; written by certificates/count_certificate.h). Boxes are lo/hi
+// pairs of doubles in model order. Cells 0..first_cover-1 are the first cover's output
+// boxes; every other cell is a half of a bisected cell.
+struct CountCellRecord {
+  enum Fit : uint8_t {
+    NoFit,       // the box is its origin (no chart, a solution box, or not reached)
+    Charted,     // a chart on the origin box made it `box`
+    Void,        // a chart showed no solution in the origin box
+    NoSolution,  // Hansen–Sengupta on the origin box showed no solution in it
+  } fit = NoFit;
+  std::vector<double> origin, box;  // as created (a contracted half), and at the end
+  std::vector<int> w;               // the chart's w (Charted, Void)
+  std::vector<double> w_tilde;      // its iterate W̃ (n lo/hi pairs): uniqueness there
+  int split_var = -1;               // bisected: at split_at in split_var; halves' ids or -1
+  double split_at = 0;
+  int32_t child[2] = {-1, -1};
+  bool alive = true;
+  // The pieces of an alive cell, with what shows each nonempty one (a u-point of W_s).
+  enum EmptyBy : uint8_t { NotEmpty, Signs, NoPoint, Paving, OtherClass };
+  // Connected: the whole graph over U (a solution box, or a chart whose range lies in the
+  // box with every factor of one sign), or star-shaped about its point.
+  enum ConnectedBy : uint8_t { NotConnected, Graph, Star };
+  struct Piece {
+    uint32_t cls;
+    PieceState state;
+    EmptyBy empty_by = NotEmpty;
+    ConnectedBy connected_by = NotConnected;
+    std::vector<int> point_w;         // a point of W_s in the box: its chart's w,
+    std::vector<double> point_u;      // the u-point (n, the chart's u in model order)
+    std::vector<double> point_hint;   // and an enclosure of w there (n lo/hi pairs)
+  };
+  std::vector<Piece> pieces;
+};
+
+struct CountRecords {
+  long first_cover = 0;
+  std::vector<CountCellRecord> cells;
+  struct Refuted {
+    int32_t a, b;
+    uint32_t cls;
+  };
+  std::vector<Refuted> refuted;  // adjacencies refuted, alive cells only
+  // Adjacencies joined, alive cells only: a point of W_s in a ∩ (b + 2πk) (w, u, hint as a
+  // piece's point), or a bridge: a chart (w, its iterate W̃) on the hull of a and b + 2πk.
+  struct Joined {
+    int32_t a, b;
+    uint32_t cls;
+    std::vector<int> shift;  // k per variable
+    bool bridge = false;
+    std::vector<int> w;
+    std::vector<double> u, hint;  // the point (bridge: empty)
+    std::vector<double> w_tilde;  // the bridge's W̃ (n lo/hi pairs)
+  };
+  std::vector<Joined> joined;
+};
+
+struct AspectsResult;
+class CertificateSink;
 
 struct CountConfig {
   double eps = 0.5;          // ε of the first cover (a uniform solve); refinement is adaptive
@@ -30,6 +91,12 @@ struct CountConfig {
   void (*progress)(int round, const CountBounds&, long cells, const long* open_by_reason,
                    void* data) = nullptr;
   void* progress_data = nullptr;
+  // The certificate: the first cover's records go to `certificate` while it is solved, and
+  // `first_cover_done` is told the solve's result (to finish them); the count's decisions
+  // come back in CountResult::records.
+  CertificateSink* certificate = nullptr;
+  void (*first_cover_done)(const AspectsResult&, void* data) = nullptr;
+  void* first_cover_data = nullptr;
 };
 
 // Why a piece is not proved connected.
@@ -68,6 +135,7 @@ struct CountResult {
   long open_by_reason[5] = {0, 0, 0, 0, 0};  // open pieces (and adjacencies) by OpenReason
   std::vector<std::string> factor_text;
   double seconds = 0;
+  std::shared_ptr<CountRecords> records;  // with CountConfig::certificate
 };
 
 // Refuses (ModelError-free std::invalid_argument) models with `factor` or `constraint`

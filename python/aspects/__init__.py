@@ -19,11 +19,14 @@ from ._aspects import (  # noqa: F401
 )
 from . import _aspects
 from .progress import progress_callback as _progress_callback
-from .answers import Command, PathResult, QueryBatch, QueryResult, Waypoint  # noqa: F401
+from .answers import (  # noqa: F401
+    Command, CountResult, OpenPlace, PathResult, QueryBatch, QueryResult, Waypoint,
+)
 from .result import Result
 
 __all__ = ["Model", "ModelError", "ResultError", "Result", "Interrupted", "solve", "load",
-           "QueryResult", "QueryBatch", "Command", "PathResult", "Waypoint", "__version__"]
+           "count", "CountResult", "OpenPlace", "QueryResult", "QueryBatch", "Command",
+           "PathResult", "Waypoint", "__version__"]
 
 
 class Interrupted(KeyboardInterrupt):
@@ -106,6 +109,42 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     if interrupted:
         raise Interrupted(result)
     return result
+
+
+def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-4, rounds=200):
+    """The certified number of aspects of `model`, as `aspects count` computes it; returns a
+    CountResult (its .count is the number when lower = upper is certified, else None, and
+    .lower/.upper the certified bounds). `model`: an aspects.Model or a .robot path.
+
+    eps: the first cover's (the refinement after it is adaptive). min_width: boxes narrower
+    than this fraction of the domain are not bisected. rounds: the refinement's round
+    budget. time_limit (seconds) and Ctrl-C stop the refinement: the bounds reached are
+    returned (they hold; .interrupted says Ctrl-C). ValueError for a model the count
+    refuses (`factor` or `constraint` statements).
+    """
+    if isinstance(model, (str, _os.PathLike)):
+        model = Model.from_file(_os.fspath(model))
+    if not isinstance(model, Model):
+        raise TypeError(f"model must be an aspects.Model or the path of a .robot file, got "
+                        f"{type(model).__name__}")
+    eps = _number("eps", eps)
+    if not (eps > 0 and eps < float("inf")):
+        raise ValueError(f"eps must be a positive number, got {eps}")
+    min_width = _number("min_width", min_width)
+    if not 0 < min_width < 1:
+        raise ValueError(f"min_width must be in (0, 1), got {min_width}")
+    rounds = _number("rounds", rounds, int)
+    if not 1 <= rounds <= 1000000:
+        raise ValueError(f"rounds must be between 1 and 1000000, got {rounds}")
+    threads = _number("threads", threads, int)
+    if not 0 <= threads <= 1024:
+        raise ValueError(f"threads must be between 0 (one per core) and 1024, got {threads}")
+    time_limit = -1.0 if time_limit is None else _number("time_limit", time_limit)
+    if time_limit != -1.0 and not time_limit > 0:
+        raise ValueError(f"time_limit must be a positive number of seconds, got {time_limit}")
+    data, line, interrupted = _aspects._count(model, eps, min_width, rounds, time_limit,
+                                              threads)
+    return CountResult.from_dict(data, line, interrupted)
 
 
 def load(directory):

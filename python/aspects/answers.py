@@ -174,3 +174,50 @@ class PathResult(_FromJson):
         """The waypoints' poses, one row each (an array of shape (len(waypoints), n))."""
         n = len(self.start)
         return np.array([w.pose for w in self.waypoints], dtype=float).reshape(-1, n)
+
+
+@dataclass(frozen=True)
+class OpenPlace(_FromJson):
+    """A place that holds the gap between a count's bounds: the `reason` (the test that
+    failed there), the sign `cls` of its piece ('+-', one sign per factor) and its box
+    [lo, hi] (model order)."""
+    reason: str
+    cls: str
+    lo: Tuple[float, ...]
+    hi: Tuple[float, ...]
+    _data: dict = field(repr=False, compare=False)
+
+    @classmethod
+    def from_dict(cls, d):
+        return cls(d["reason"], d["class"], tuple(d["lo"]), tuple(d["hi"]), d)
+
+
+@dataclass(frozen=True)
+class CountResult(_FromJson):
+    """The certified count of aspects.count: `lower` and `upper` bounds (upper None when a
+    piece is not proved connected), `exact` when they meet (then `count` is the number),
+    `line` the sentence `aspects count` prints first, `stop` why the refinement ended,
+    `open` the first places that hold the gap, and `interrupted` when Ctrl-C stopped it
+    (the bounds still hold). .to_dict() is `aspects count --json`'s object."""
+    lower: int
+    upper: Optional[int]
+    exact: bool
+    line: str
+    stop: str
+    open: Tuple[OpenPlace, ...]
+    interrupted: bool
+    _data: dict = field(repr=False, compare=False)
+
+    @classmethod
+    def from_dict(cls, d, line, interrupted=False):
+        return cls(d["lower_bound"], d["upper_bound"], d["exact"], line, d["stop"],
+                   tuple(OpenPlace.from_dict(o) for o in d.get("open", ())), bool(interrupted),
+                   d)
+
+    @property
+    def count(self):
+        """The number of aspects when it is certified exactly (lower = upper), else None."""
+        return self.lower if self.exact else None
+
+    def __str__(self):
+        return self.line

@@ -17,4 +17,5 @@ PYBIND11_MODULE(_aspects, m) {
   aspects::py::bind_model(m);
   aspects::py::bind_result(m);
   aspects::py::bind_solve(m);
+  aspects::py::bind_count(m);
 }

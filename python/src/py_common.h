@@ -29,5 +29,6 @@ void bind_errors(pyb::module_& m);
 void bind_model(pyb::module_& m);
 void bind_solve(pyb::module_& m);
 void bind_result(pyb::module_& m);
+void bind_count(pyb::module_& m);
 
 }  // namespace aspects::py

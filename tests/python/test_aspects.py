@@ -635,3 +635,40 @@ def test_solves_at_once_keep_their_own_arithmetic():
     assert np.array_equal(alone[1].lower, alone[0].lower, equal_nan=True)
     for a in alone:  # as `aspects solve robots/rprpr.robot --eps 0.03`
         assert (a.summary["boxes"]["solution"], a.summary["boxes"]["undecided"]) == (5314, 2358)
+
+
+# ------------------------------------------------------------------------------ count
+def test_count_is_exact_on_prrp_and_equals_the_command_line():
+    c = aspects.count(PRRP)
+    assert c.exact and c.count == 4 and c.lower == c.upper == 4
+    assert str(c) == "4 aspects (certified: lower = upper)"
+    assert not c.interrupted and c.open == ()
+    j = json.loads(cli("count", PRRP, "--json").stdout)
+    d = c.to_dict()
+    for key in ("lower_bound", "upper_bound", "exact", "stop", "boxes", "pieces", "adjacencies"):
+        assert d[key] == j[key], key
+
+
+def test_count_with_a_round_budget_gives_the_lower_bound_and_the_open_places():
+    c = aspects.count(PRRP, rounds=1)
+    assert not c.exact and c.count is None
+    assert c.lower == 4 and c.upper is None
+    assert c.stop == "round budget spent"
+    assert str(c) == "at least 4 aspects (certified); no upper bound: 4 piece(s) not proved connected"
+    assert len(c.open) == 4 and {p.cls for p in c.open} == {"--", "-+", "+-", "++"}
+    assert all(p.reason == "no chart proved (pose, command or mixed)" for p in c.open)
+    assert all(lo <= hi for p in c.open for lo, hi in zip(p.lo, p.hi))
+
+
+def test_count_refuses_what_the_command_line_refuses():
+    model = aspects.Model.from_string(
+        "robot r\npose x in [-2, 2]\ncommand q in [-5, 5]\nequation q - x = 0\n"
+        "constraint x <= 1\n", "r.robot")
+    with pytest.raises(ValueError, match=r"r\.robot: count: models with `constraint`"):
+        aspects.count(model)
+    with pytest.raises(ValueError, match="rounds must be"):
+        aspects.count(PRRP, rounds=0)
+    with pytest.raises(ValueError, match="min_width must be"):
+        aspects.count(PRRP, min_width=1)
+    with pytest.raises(TypeError):
+        aspects.count(42)
