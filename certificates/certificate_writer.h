@@ -96,7 +96,7 @@ class CertificateWriter : public CertificateSink {
   TreeSink* top() override { return top_.get(); }
   TreeSink* subtree(int32_t task, const Box& root) override;
 
-  // Checkpoints (apps/checkpoint.*): the records of a finished part (task -1: the top),
+  // Checkpoints (run/checkpoint.*): the records of a finished part (task -1: the top),
   // and a finished part's records put back before a resumed search (instead of searching
   // it: then neither top() nor subtree(task) is called for it).
   std::string records(int32_t task);
