@@ -85,6 +85,10 @@ class CountCheck {
   bool point(const Box& box, const std::vector<int>& w, const std::vector<double>& u,
              const Box& hint, Mask cls, std::vector<Ival>* at = nullptr);
   bool narrow_w(const Cell& cell, std::vector<Ival>& b);
+  // Halves part z of a paving in its u (of uv) widest relative to the cell's box, pushing
+  // both halves; false when every u is narrower than min_rel of it or cannot be halved.
+  bool halve_widest_u(const Cell& cell, const std::vector<int>& uv, double min_rel, Box z,
+                      std::vector<Box>& stack) const;
   bool paving(const Cell& cell, Mask cls);
   bool crosses(const Cell& cell, int j, bool upper);
   bool graph(const Cell& cell, Mask cls);

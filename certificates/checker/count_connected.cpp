@@ -267,22 +267,7 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
       cleared = d.sign() < 0;
     }
     if (cleared) continue;
-    int best = -1;
-    double rel = 1e-6;
-    for (int k = 0; k < n_; ++k) {
-      const int x = uv[k];
-      const double full = cell.box[2 * x + 1] - cell.box[2 * x];
-      const double r = (z[2 * x + 1] - z[2 * x]) / (full > 0 ? full : 1.0);
-      if (r > rel) rel = r, best = x;
-    }
-    if (best < 0) return false;
-    const double mid = 0.5 * (z[2 * best] + z[2 * best + 1]);
-    if (!(z[2 * best] < mid && mid < z[2 * best + 1])) return false;
-    Box right = z;
-    z[2 * best + 1] = mid;
-    right[2 * best] = mid;
-    stack.push_back(std::move(z));
-    stack.push_back(std::move(right));
+    if (!halve_widest_u(cell, uv, 1e-6, std::move(z), stack)) return false;
   }
   return true;
 }

@@ -237,6 +237,26 @@ bool CountCheck::narrow_w(const Cell& cell, std::vector<Ival>& b) {
   return true;
 }
 
+bool CountCheck::halve_widest_u(const Cell& cell, const std::vector<int>& uv, double min_rel,
+                                Box z, std::vector<Box>& stack) const {
+  int best = -1;
+  double rel = min_rel;
+  for (int v : uv) {
+    const double full = cell.box[2 * v + 1] - cell.box[2 * v];
+    const double r = (z[2 * v + 1] - z[2 * v]) / (full > 0 ? full : 1.0);
+    if (r > rel) rel = r, best = v;
+  }
+  if (best < 0) return false;
+  const double mid = 0.5 * (z[2 * best] + z[2 * best + 1]);
+  if (!(z[2 * best] < mid && mid < z[2 * best + 1])) return false;
+  Box right = z;
+  z[2 * best + 1] = mid;
+  right[2 * best] = mid;
+  stack.push_back(std::move(z));
+  stack.push_back(std::move(right));
+  return true;
+}
+
 bool CountCheck::paving(const Cell& cell, Mask cls) {
   if (cell.w.empty()) return false;
   std::vector<int> uv;
@@ -260,22 +280,7 @@ bool CountCheck::paving(const Cell& cell, Mask cls) {
     }
     if (!cleared) cleared = (excluded(b) >> cls) & 1;
     if (cleared) continue;
-    int best = -1;
-    double rel = 1e-9;
-    for (int k = 0; k < n_; ++k) {
-      const int v = uv[k];
-      const double full = cell.box[2 * v + 1] - cell.box[2 * v];
-      const double r = (z[2 * v + 1] - z[2 * v]) / (full > 0 ? full : 1.0);
-      if (r > rel) rel = r, best = v;
-    }
-    if (best < 0) return false;
-    const double mid = 0.5 * (z[2 * best] + z[2 * best + 1]);
-    if (!(z[2 * best] < mid && mid < z[2 * best + 1])) return false;
-    Box right = z;
-    z[2 * best + 1] = mid;
-    right[2 * best] = mid;
-    stack.push_back(std::move(z));
-    stack.push_back(std::move(right));
+    if (!halve_widest_u(cell, uv, 1e-9, std::move(z), stack)) return false;
   }
   return true;
 }
