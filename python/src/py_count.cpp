@@ -1,9 +1,5 @@
 // aspects.count: the certified number of aspects, or bounds on it (proofs/counting/), as
 // `aspects count --json` reports it (run/count_report.h).
-#include <chrono>
-#include <condition_variable>
-#include <exception>
-#include <mutex>
 #include <stdexcept>
 #include <thread>
 
@@ -11,6 +7,7 @@
 #include "model/model.h"
 #include "py_common.h"
 #include "py_model.h"
+#include "py_polling.h"
 #include "run/count_report.h"
 #include "search/stop_condition.h"
 
@@ -18,8 +15,13 @@ namespace aspects::py {
 
 namespace {
 
-// The count on a worker thread, the caller's thread polling Python's signals: Ctrl-C stops
-// the refinement, and the bounds reached (which hold) are returned, as on the command line.
+const InterruptNotes kCountInterrupts = {
+    "aspects.count: interrupted: the refinement stops and the certified bounds reached are "
+    "returned (Ctrl-C again to stop at once)\n",
+    "aspects.count: interrupted again: stopping now\n"};
+
+// The count on a worker thread (py_polling.h): Ctrl-C stops the refinement, and the bounds
+// reached (which hold) are returned, as on the command line.
 pyb::tuple count(const PyModel& pm, const CountConfig& given, double time_limit) {
   Model m = parse_model(pm.source, pm.file);
   StopCondition stop;
@@ -28,48 +30,12 @@ pyb::tuple count(const PyModel& pm, const CountConfig& given, double time_limit)
   cfg.stop = &stop;
   CountResult r;
   bool interrupted = false;
-  std::mutex mu;
-  std::condition_variable cv;
-  bool done = false;
-  std::exception_ptr failure;
-  {
-    pyb::gil_scoped_release release;
-    std::thread worker([&] {
-      try {
-        r = count_aspects(m, cfg);
-      } catch (...) {
-        failure = std::current_exception();
-      }
-      std::lock_guard<std::mutex> lock(mu);
-      done = true;
-      cv.notify_all();
-    });
-    for (;;) {
-      {
-        std::unique_lock<std::mutex> lock(mu);
-        if (cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
-      }
-      pyb::gil_scoped_acquire acquire;
-      if (PyErr_CheckSignals() != 0) {
-        if (!PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
-          stop.interrupt();
-          stop.interrupt();  // a second one: stop at once
-          worker.join();
-          throw pyb::error_already_set();
-        }
-        PyErr_Clear();
-        interrupted = true;
-        stop.interrupt();  // any stop ends the refinement (a first one, the first cover's search)
-      }
-    }
-    worker.join();
-  }
-  if (failure) {
-    try {
-      std::rethrow_exception(failure);
-    } catch (const std::invalid_argument& e) {  // a refused model: named as the CLI names it
-      throw std::invalid_argument(m.file + ": " + e.what());
-    }
+  Progress none;  // no progress callback
+  try {
+    run_polling([&] { r = count_aspects(m, cfg); }, stop, none, pyb::none(), kCountInterrupts,
+                interrupted);
+  } catch (const std::invalid_argument& e) {  // a refused model: named as the CLI names it
+    throw std::invalid_argument(m.file + ": " + e.what());
   }
   return pyb::make_tuple(to_python(count_json(m, r, cfg.eps)),
                          pyb::str(count_line(r.bounds)), interrupted);

@@ -21,6 +21,7 @@
 #include "numerics/interval.h"
 #include "py_common.h"
 #include "py_model.h"
+#include "py_polling.h"
 #include "results/result_index.h"
 #include "run/solve_config.h"
 #include "run/solve_outputs.h"
@@ -32,16 +33,6 @@
 namespace aspects::py {
 
 namespace {
-
-// What the worker reports, read by the polling thread.
-struct Progress {
-  std::mutex mu;
-  long processed = 0, solutions = 0, undecided = 0;
-  double decided = 0;
-  std::vector<std::pair<std::string, double>> phases;
-  // Set under `mu` by the run, read without it by the polling thread.
-  std::atomic<bool> changed{false};
-};
 
 struct SolveRequest {
   double eps = 0.1, tau = 1.01, time_limit = -1;
@@ -82,104 +73,10 @@ SolvePlan plan_of(const PyModel& pm, const SolveRequest& q) {
   return plan_solve(o, pm.source, pm.file);
 }
 
-pyb::dict progress_dict(Progress& p, double seconds) {
-  std::lock_guard<std::mutex> lock(p.mu);
-  pyb::dict d;
-  d["processed"] = p.processed;
-  d["solutions"] = p.solutions;
-  d["undecided"] = p.undecided;
-  d["decided"] = p.decided;
-  d["seconds"] = seconds;
-  pyb::list phases;
-  for (auto& [name, s] : p.phases) phases.append(pyb::make_tuple(name, s));
-  d["phases"] = phases;
-  p.changed = false;
-  return d;
-}
-
-const char* const kFirstInterrupt =
+const InterruptNotes kSolveInterrupts = {
     "aspects.solve: interrupted: no more boxes are searched; the links, CSNCs, bound and "
-    "witnesses are finished on what was searched (Ctrl-C again to stop at once)\n";
-const char* const kSecondInterrupt =
-    "aspects.solve: interrupted again: stopping now, with what is established so far\n";
-
-// Runs `work` on a worker thread while this thread, holding the GIL between waits, runs
-// signal handlers and the progress callback. A KeyboardInterrupt interrupts `stop` (the
-// first the search, the second the whole run); an exception of another handler or of the
-// callback stops the whole run, and is raised once the run ended.
-void run_polling(const std::function<void()>& work, StopCondition& stop, Progress& progress,
-                 const pyb::object& callback, bool& interrupted) {
-  std::mutex mu;
-  std::condition_variable cv;
-  bool done = false;
-  std::exception_ptr failure;
-  std::unique_ptr<pyb::error_already_set> callback_error;
-  const auto start = std::chrono::steady_clock::now();
-  // Ctrl-C, seen by the signal check or raised inside the callback (tqdm's, say): the
-  // interrupt a SIGINT is on the command line, never the callback's failure.
-  auto on_interrupt = [&] {
-    interrupted = true;
-    const StopScope scope = stop.interrupt();
-    PySys_WriteStderr("%s", scope == StopScope::Search ? kFirstInterrupt : kSecondInterrupt);
-  };
-  {
-    pyb::gil_scoped_release release;
-    std::thread worker([&] {
-      try {
-        work();
-      } catch (...) {
-        failure = std::current_exception();
-      }
-      std::lock_guard<std::mutex> lock(mu);
-      done = true;
-      cv.notify_all();
-    });
-    for (;;) {
-      {
-        std::unique_lock<std::mutex> lock(mu);
-        if (cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
-      }
-      pyb::gil_scoped_acquire acquire;
-      if (PyErr_CheckSignals() != 0) {
-        // Only KeyboardInterrupt is swallowed: it becomes the interrupt a SIGINT is on the
-        // command line. Another handler's exception stops the run and is raised after.
-        if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
-          PyErr_Clear();
-          on_interrupt();
-        } else {
-          if (!callback_error) callback_error = std::make_unique<pyb::error_already_set>();
-          stop.request(StopReason::Signal);
-        }
-      }
-      if (!callback.is_none() && !callback_error && progress.changed) {
-        double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        try {
-          callback(progress_dict(progress, t));
-        } catch (pyb::error_already_set& e) {
-          if (e.matches(PyExc_KeyboardInterrupt)) {
-            on_interrupt();
-          } else {
-            callback_error = std::make_unique<pyb::error_already_set>(std::move(e));
-            stop.request(StopReason::Signal);
-          }
-        }
-      }
-    }
-    worker.join();
-  }
-  // The last state, so that even a run shorter than one poll reports its end.
-  if (!callback.is_none() && !callback_error && progress.changed && !failure) {
-    double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    try {
-      callback(progress_dict(progress, t));
-    } catch (pyb::error_already_set& e) {
-      if (!e.matches(PyExc_KeyboardInterrupt)) throw;
-      on_interrupt();  // the run is over: nothing left to stop, but it was interrupted
-    }
-  }
-  if (callback_error) throw std::move(*callback_error);
-  if (failure) std::rethrow_exception(failure);
-}
+    "witnesses are finished on what was searched (Ctrl-C again to stop at once)\n",
+    "aspects.solve: interrupted again: stopping now, with what is established so far\n"};
 
 pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::object& callback) {
   SolvePlan plan = plan_of(pm, request);  // the output directory locked until the end
@@ -233,7 +130,7 @@ pyb::tuple solve(const PyModel& pm, const SolveRequest& request, const pyb::obje
         index.sha256 = hashes.index_sha256;
         loaded = std::make_shared<LoadedResult>(load_result_from(std::move(index), pm.file));
       },
-      stop, progress, callback, interrupted);
+      stop, progress, callback, kSolveInterrupts, interrupted);
   set_working_precision(o.prec);  // as load_result does on the thread that queries
   PyResult result{loaded, summary, o.out_dir};
   return pyb::make_tuple(pyb::cast(std::move(result)), interrupted);
