@@ -578,9 +578,27 @@ class Counter {
     return AdjacencyState::Refuted;
   }
 
+  // An adjacency's class in the round's graph: adj_[adj].classes[klass] is its edge `edge`.
+  struct EdgeRef {
+    int32_t adj, klass, edge;
+  };
+
   CountBounds decide_adjacencies_and_bound(std::vector<int32_t>& refine, CountResult& out) {
-    // The graph of this round: one node per piece of a live cell.
     CountGraph g;
+    std::vector<EdgeRef> edges;
+    build_round_graph(g, edges);
+    decide_between_components(g, edges);
+    const CountBounds b = g.bounds();
+    out.bounds = b;
+    out.pieces = g.pieces();
+    out.adjacencies = g.adjacencies();
+    mark_open(g, edges, refine, out);
+    return b;
+  }
+
+  // The graph of this round: one node per piece of a live cell, an edge per class of an
+  // adjacency whose two pieces are not empty.
+  void build_round_graph(CountGraph& g, std::vector<EdgeRef>& edges) {
     std::vector<std::vector<int32_t>> node(cells_.size());
     for (size_t c = 0; c < cells_.size(); ++c) {
       if (!cells_[c].alive) continue;
@@ -595,10 +613,6 @@ class Counter {
         if (ps[i].cls == cls) return node[cell][i];
       return -1;
     };
-    struct EdgeRef {
-      int32_t adj, klass, edge;
-    };
-    std::vector<EdgeRef> edges;
     for (size_t a = 0; a < adj_.size(); ++a) {
       Adj& e = adj_[a];
       for (const PieceRec& r : cells_[e.a].pieces) {
@@ -617,6 +631,9 @@ class Counter {
         edges.push_back({int32_t(a), k, id});
       }
     }
+  }
+
+  void decide_between_components(CountGraph& g, const std::vector<EdgeRef>& edges) {
     // Join first, across components of H only (a spanning forest of witnesses), then refute
     // what still separates two components.
     const int32_t n = g.pieces();
@@ -641,12 +658,12 @@ class Counter {
       if (ce.state == AdjacencyState::Joined) h.union_set(x, y);
       if (stopped()) break;
     }
-    const CountBounds b = g.bounds();
-    out.bounds = b;
-    out.pieces = g.pieces();
-    out.adjacencies = g.adjacencies();
-    // What to refine: boxes of open pieces, and both boxes of an undecided adjacency between
-    // two components of H.
+  }
+
+  // The open places, and what to refine: boxes of open pieces, and both boxes of an
+  // undecided adjacency between two components of H.
+  void mark_open(const CountGraph& g, const std::vector<EdgeRef>& edges,
+                 std::vector<int32_t>& refine, CountResult& out) {
     const std::vector<int32_t> hc = g.joined_components();
     std::vector<uint8_t> mark(cells_.size(), 0);
     out.open.clear();
@@ -684,7 +701,6 @@ class Counter {
     }
     for (size_t c = 0; c < cells_.size(); ++c)
       if (mark[c]) refine.push_back(int32_t(c));
-    return b;
   }
 
   void bounds_and_open(CountResult& out, bool) {
