@@ -55,6 +55,38 @@ def _number(name, value, kind=float):
     return kind(value)
 
 
+def _model_of(model):
+    """An aspects.Model, or the path of a .robot file read as Model.from_file reads it."""
+    if isinstance(model, (str, _os.PathLike)):
+        model = Model.from_file(_os.fspath(model))
+    if not isinstance(model, Model):
+        raise TypeError(f"model must be an aspects.Model or the path of a .robot file, got "
+                        f"{type(model).__name__}")
+    return model
+
+
+def _eps(eps):
+    eps = _number("eps", eps)
+    if not (eps > 0 and eps < float("inf")):
+        raise ValueError(f"eps must be a positive number, got {eps}")
+    return eps
+
+
+def _threads(threads):
+    threads = _number("threads", threads, int)
+    if not 0 <= threads <= 1024:
+        raise ValueError(f"threads must be between 0 (one per core) and 1024, got {threads}")
+    return threads
+
+
+def _time_limit(time_limit):
+    """-1.0 for none (the compiled module's convention), else positive seconds."""
+    time_limit = -1.0 if time_limit is None else _number("time_limit", time_limit)
+    if time_limit != -1.0 and not time_limit > 0:
+        raise ValueError(f"time_limit must be a positive number of seconds, got {time_limit}")
+    return time_limit
+
+
 def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *,
           max_boxes=None, prec=53, tau=1.01, all_links=False, bisect=None, certificate=True,
           compress_certificate=False, mpfi_only=False):
@@ -77,20 +109,10 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     operation MPFI's, as `aspects solve --mpfi-only` (the same result, slower); it is this
     run's alone, also when other solves run at once in the process.
     """
-    if isinstance(model, (str, _os.PathLike)):
-        model = Model.from_file(_os.fspath(model))
-    if not isinstance(model, Model):
-        raise TypeError(f"model must be an aspects.Model or the path of a .robot file, got "
-                        f"{type(model).__name__}")
-    eps = _number("eps", eps)
-    if not (eps > 0 and eps < float("inf")):
-        raise ValueError(f"eps must be a positive number, got {eps}")
-    threads = _number("threads", threads, int)
-    if not 0 <= threads <= 1024:
-        raise ValueError(f"threads must be between 0 (one per core) and 1024, got {threads}")
-    time_limit = -1.0 if time_limit is None else _number("time_limit", time_limit)
-    if time_limit != -1.0 and not time_limit > 0:
-        raise ValueError(f"time_limit must be a positive number of seconds, got {time_limit}")
+    model = _model_of(model)
+    eps = _eps(eps)
+    threads = _threads(threads)
+    time_limit = _time_limit(time_limit)
     max_boxes = -1 if max_boxes is None else _number("max_boxes", max_boxes, int)
     if max_boxes != -1 and max_boxes < 1:
         raise ValueError(f"max_boxes must be at least 1, got {max_boxes}")
@@ -122,26 +144,16 @@ def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-4, rounds=
     returned (they hold; .interrupted says Ctrl-C). ValueError for a model the count
     refuses (`factor` or `constraint` statements).
     """
-    if isinstance(model, (str, _os.PathLike)):
-        model = Model.from_file(_os.fspath(model))
-    if not isinstance(model, Model):
-        raise TypeError(f"model must be an aspects.Model or the path of a .robot file, got "
-                        f"{type(model).__name__}")
-    eps = _number("eps", eps)
-    if not (eps > 0 and eps < float("inf")):
-        raise ValueError(f"eps must be a positive number, got {eps}")
+    model = _model_of(model)
+    eps = _eps(eps)
     min_width = _number("min_width", min_width)
     if not 0 < min_width < 1:
         raise ValueError(f"min_width must be in (0, 1), got {min_width}")
     rounds = _number("rounds", rounds, int)
     if not 1 <= rounds <= 1000000:
         raise ValueError(f"rounds must be between 1 and 1000000, got {rounds}")
-    threads = _number("threads", threads, int)
-    if not 0 <= threads <= 1024:
-        raise ValueError(f"threads must be between 0 (one per core) and 1024, got {threads}")
-    time_limit = -1.0 if time_limit is None else _number("time_limit", time_limit)
-    if time_limit != -1.0 and not time_limit > 0:
-        raise ValueError(f"time_limit must be a positive number of seconds, got {time_limit}")
+    threads = _threads(threads)
+    time_limit = _time_limit(time_limit)
     data, line, interrupted = _aspects._count(model, eps, min_width, rounds, time_limit,
                                               threads)
     return CountResult.from_dict(data, line, interrupted)
