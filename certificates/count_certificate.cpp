@@ -52,16 +52,6 @@ std::string signs_of(uint32_t cls, int p) {
   return s;
 }
 
-const char* state_word(PieceState s) {
-  switch (s) {
-    case PieceState::Empty: return "empty";
-    case PieceState::Connected: return "connected";
-    case PieceState::Nonempty: return "nonempty";
-    case PieceState::Undecided: return "undecided";
-  }
-  return "?";
-}
-
 const char* empty_word(CountCellRecord::EmptyBy e) {
   switch (e) {
     case CountCellRecord::Signs: return "signs";
@@ -147,7 +137,7 @@ void CountCertificateWriter::finish(const Model&, const CountResult& r) {
       continue;
     }
     for (const CountCellRecord::Piece& q : c.pieces) {
-      out.word("piece").integer(long(id)).word(signs_of(q.cls, p)).word(state_word(q.state));
+      out.word("piece").integer(long(id)).word(signs_of(q.cls, p)).word(piece_state_name(q.state));
       if (q.state == PieceState::Empty) {
         out.word(empty_word(q.empty_by));
         out.end();
