@@ -67,10 +67,12 @@ void CountCheck::half() {
   cell.state = State::Live;
 }
 
-// fit ID W W~ BOX: the chart's iterate W̃ holds the origin's w; Hansen–Sengupta on
-// origin_u × W̃ gives H ⊆ int W̃, so every solution of the origin is (u, w(u)) with w(u) ∈
-// origin_w ∩ H (∩ the domain's enclosure on a non-periodic w), which BOX holds; BOX keeps
-// the origin's u and lies in W̃ (so V ∩ BOX is the graph over U cut by BOX's w).
+// fit ID W W~ BOX: BOX's u holds the origin's u (the same, or a little larger: then the
+// cell's box overlaps its neighbours, and joins have room), in the root cell; the chart's
+// iterate W̃ holds the origin's w; Hansen–Sengupta on BOX_u × W̃ gives H ⊆ int W̃, so every
+// solution of BOX_u × W̃, the origin's among them, is (u, w(u)) with w(u) ∈ H, and in
+// origin_w ∩ H (∩ the domain's enclosure on a non-periodic w) for the origin's, which BOX
+// holds; BOX lies in W̃ (so V ∩ BOX is the graph over BOX_u cut by BOX's w).
 // void ID W W~: the same step shows no solution in the origin.
 void CountCheck::fit(bool void_only) {
   c_.rd.count(2 + size_t(n_) + 2 * size_t(n_) + (void_only ? 0 : 2 * size_t(nv_)));
@@ -82,6 +84,14 @@ void CountCheck::fit(bool void_only) {
   const Box wt = reals_box(n_);
   const Box B = void_only ? Box() : reals_box(nv_);
   std::vector<Ival> b = ivals(cell.origin);
+  for (int v = 0; v < nv_ && !void_only; ++v) {
+    if (std::find(w.begin(), w.end(), v) != w.end()) continue;
+    if (!within(B[2 * v], B[2 * v + 1], cell.origin[2 * v], cell.origin[2 * v + 1]))
+      reject("chart: the box's " + c_.m.vars[v].name + " does not hold the origin's");
+    if (!within(c_.root[2 * v], c_.root[2 * v + 1], B[2 * v], B[2 * v + 1]))
+      reject("chart: the box's " + c_.m.vars[v].name + " leaves the root cell");
+    b[v].set(B[2 * v], B[2 * v + 1]);
+  }
   for (int j = 0; j < n_; ++j) {
     const int v = w[j];
     if (!within(wt[2 * j], wt[2 * j + 1], cell.origin[2 * v], cell.origin[2 * v + 1]))
@@ -125,11 +135,7 @@ void CountCheck::fit(bool void_only) {
   }
   for (int v = 0; v < nv_; ++v) {
     const auto it = std::find(w.begin(), w.end(), v);
-    if (it == w.end()) {
-      if (B[2 * v] != cell.origin[2 * v] || B[2 * v + 1] != cell.origin[2 * v + 1])
-        reject("chart: the box's u changed");
-      continue;
-    }
+    if (it == w.end()) continue;  // u: checked above
     const size_t j = size_t(it - w.begin());
     if (!within(wt[2 * j], wt[2 * j + 1], B[2 * v], B[2 * v + 1]))
       reject("chart: the box's " + c_.m.vars[v].name + " leaves W~");

@@ -18,6 +18,10 @@ enum class Hs { Image, Empty, Failed };
 // A set of sign classes: bit s for the class s (bit i of s set when factor i is positive).
 using Mask = uint64_t;
 constexpr int kMaxCountFactors = 6;  // 2^6 classes, one bit each in a Mask
+// The pavings' budgets (parts of U per star test, per empty piece): a cap on work, not a
+// part of any proof. Above the engine's own (8000 and 4000), whose arithmetic differs.
+constexpr long kStarParts = 1L << 16;
+constexpr long kPavingParts = 1L << 16;
 
 class CountCheck {
  public:

@@ -204,7 +204,7 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
   while (!stack.empty()) {
     Box z = std::move(stack.back());
     stack.pop_back();
-    if (++parts > 8192) return false;
+    if (++parts > kStarParts) return false;
     // w over the part: in W̃ (unique) and in every image of the step on part × (W̃ ∩ ...).
     std::vector<Ival> b = ivals(z);
     if (!narrow_w(cell, b)) continue;  // no point of the graph over this part
@@ -267,7 +267,7 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
       cleared = d.sign() < 0;
     }
     if (cleared) continue;
-    if (!halve_widest_u(cell, uv, 1e-6, std::move(z), stack)) return false;
+    if (!halve_widest_u(cell, uv, 1e-8, std::move(z), stack)) return false;
   }
   return true;
 }

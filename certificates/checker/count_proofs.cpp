@@ -268,7 +268,7 @@ bool CountCheck::paving(const Cell& cell, Mask cls) {
   while (!stack.empty()) {
     Box z = std::move(stack.back());
     stack.pop_back();
-    if (++parts > 4096) return false;
+    if (++parts > kPavingParts) return false;
     std::vector<Ival> b = ivals(z);
     if (!narrow_w(cell, b)) continue;
     bool cleared = false;

@@ -15,6 +15,11 @@ SplitChoice Bisector::choose(const Box& box, const SplitContext& ctx) const {
   if (!wide) return c;
   c.var = variable(box, ctx);
   c.at = box[c.var].mid();  // a double strictly inside (splittable): both halves are smaller
+  if (fraction_ != 0.5) {
+    const double lo = box[c.var].lo_down(), hi = box[c.var].hi_up();
+    const double at = lo + fraction_ * (hi - lo);
+    if (lo < at && at < hi) c.at = at;  // else the middle
+  }
   return c;
 }
 

@@ -36,6 +36,10 @@ class Bisector {
  public:
   virtual ~Bisector() = default;
   SplitChoice choose(const Box& box, const SplitContext& ctx) const;
+  // Where a variable is cut: lo + fraction·width (the middle by default). The count's first
+  // cover cuts off the middle, so that no cut lies on a plane of symmetry of the model,
+  // where singular curves meet a cut and a seam in one point (proofs/counting/exact_count.h).
+  void set_split_fraction(double fraction) { fraction_ = fraction; }
 
  protected:
   Bisector(const Model& m, double eps) : m_(m), eps_(eps) {}
@@ -43,6 +47,7 @@ class Bisector {
   virtual int variable(const Box& box, const SplitContext& ctx) const = 0;
   const Model& m_;
   double eps_;
+  double fraction_ = 0.5;
 };
 
 enum class BisectorKind {

@@ -10,7 +10,9 @@ namespace aspects {
 namespace {
 
 // Newton in doubles for w at the u-point of `pt` (its w-part: the box's), from `start` or
-// the middle of the w-part: a choice. False when it fails or ends outside the w-part.
+// the middle of the w-part: a choice. False when it fails. It may end outside the w-part:
+// in a box cut across a thin strip of the graph most u-points have their w outside, and
+// how far outside tells the climb where the strip lies.
 bool newton_w(ModelEvaluator& ev, Box& pt, const Box& box, const std::vector<int>& w,
               const std::vector<double>* start, std::vector<double>& wpt) {
   const int n = ev.n(), nv = int(pt.size());
@@ -47,7 +49,7 @@ bool newton_w(ModelEvaluator& ev, Box& pt, const Box& box, const std::vector<int
   wpt.resize(n);
   for (int j = 0; j < n; ++j) {
     wpt[j] = v[w[j]];
-    if (!(wpt[j] >= box[w[j]].lo_down() && wpt[j] <= box[w[j]].hi_up())) return false;
+    if (!std::isfinite(wpt[j])) return false;
   }
   return true;
 }
@@ -89,8 +91,8 @@ ClassPointSearch::ClassPointSearch(ModelEvaluator& ev, const FactorGradients& fg
   }
 }
 
-// The solution over u and its factors; false when Newton leaves the box or a factor is
-// undefined there.
+// The solution over u and its factors; false when Newton fails or a factor is undefined
+// there. `face` is negative when w lies outside the box's w-part.
 bool ClassPointSearch::sample(std::vector<double> u, const std::vector<double>* start,
                               Sample& out) {
   const int n = ev_.n(), p = fg_.factors();

@@ -17,7 +17,9 @@ EmptyVerdict prove_piece_empty(ModelEvaluator& ev, const FactorGradients& fg, co
     stack.pop_back();
     if (++paved > max_boxes) return EmptyVerdict::NotProved;
     // Every w(u), u in this part, lies in the intersection.
-    if (hansen_sengupta(ev, z, true, image, ws, false, &chart.w) == HsStatus::Ok)
+    const HsStatus hs = hansen_sengupta(ev, z, true, image, ws, false, &chart.w);
+    if (hs == HsStatus::NoSolution) continue;  // no point of V in this part of the box
+    if (hs == HsStatus::Ok)
       for (int j = 0; j < n; ++j) z[chart.w[j]] = image[j];
     bool cleared = false;
     if (fg.values(ev, z, values))

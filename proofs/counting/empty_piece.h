@@ -12,9 +12,12 @@ namespace aspects {
 
 enum class EmptyVerdict : uint8_t { Empty, NotProved };
 
-// `box`: U × the chart's range of w. max_boxes: the paving's budget.
+// `box`: the cell's box U × W (a point of the piece is a solution in it; a part of U whose
+// w(u) all leave W is cleared as holding none, as check_cert's paving clears it: a class cut
+// off by a face of W is empty with no factor's sign to show). max_boxes: the paving's budget
+// (check_cert allows more).
 EmptyVerdict prove_piece_empty(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart,
                                const Box& box, uint32_t cls, HsWorkspace& ws,
-                               long max_boxes = 256);
+                               long max_boxes = 4000);
 
 }  // namespace aspects

@@ -46,6 +46,7 @@ const char* count_stop_name(CountStop s) {
 namespace {
 
 constexpr size_t kMaxOpenPlaces = 8;
+constexpr double kFaceMargin = 1e-6;  // relative to the w-part's width
 
 struct PieceRec {
   uint32_t cls;
@@ -344,6 +345,7 @@ class Counter {
       return;
     }
     if (cv == ChartVerdict::Proved) {
+      if (!c.solution) grow_u(c, chart);
       decide_charted(c, chart, classes);
       return;
     }
@@ -353,6 +355,30 @@ class Counter {
     const int cut = chart_split_variable(ev_, c.box, domain_width_);
     if (cut >= 0) c.split_in = {cut};
     for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
+  }
+
+  // U grown a little at each end inside the domain, when the chart holds there too: a box
+  // contracted around its solutions ends where the graph leaves it, at an extreme of a
+  // coordinate, and the neighbour across that face begins there. A join's witness would then
+  // have to lie on both faces to the last bit; with the overlap it has room. (The cover only
+  // needs boxes holding their origin's solutions: a larger box holds them too.)
+  void grow_u(Cell& c, Chart& chart) {
+    Box grown = c.box;
+    bool changed = false;
+    for (int v : chart.u) {
+      const double lo = c.box[v].lo_down(), hi = c.box[v].hi_up();
+      const double margin = kFaceMargin * (hi - lo);
+      // Within the domain; a periodic one's too: not across the seam.
+      const double glo = std::max(lo - margin, m_.vars[v].domain.lo_down());
+      const double ghi = std::min(hi + margin, m_.vars[v].domain.hi_up());
+      if (glo < lo || ghi > hi) changed = true;
+      grown[v].set_hull(std::min(glo, lo), std::max(ghi, hi));
+    }
+    if (!changed) return;
+    Chart wider;
+    if (prove_chart(ev_, grown, chart.w, ws_, wider) != ChartVerdict::Proved) return;
+    c.box = std::move(grown);
+    chart = std::move(wider);
   }
 
   // The pieces of a box on which `chart` is proved (FORMAT.md "Counting", C2–C4).
@@ -413,7 +439,7 @@ class Counter {
       ClassPoint centre;
       if (!points) points = std::make_unique<ClassPointSearch>(ev_, fg_, c.box, chart.w, 3);
       if (points->find(s, ws_, centre) != PointVerdict::Found) {
-        const bool empty = prove_piece_empty(ev_, fg_, chart, z, s, ws_) == EmptyVerdict::Empty;
+        const bool empty = prove_piece_empty(ev_, fg_, chart, c.box, s, ws_) == EmptyVerdict::Empty;
         c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
                             OpenReason::NoPoint,
                             empty ? CountCellRecord::Paving : CountCellRecord::NotEmpty});
@@ -469,7 +495,21 @@ class Counter {
       const double lo = std::max(c.box[v].lo_down(), chart.w_range[j].lo_down());
       const double hi = std::min(c.box[v].hi_up(), chart.w_range[j].hi_up());
       if (!(lo <= hi)) return false;  // no solution in the box
-      if (!c.solution) c.box[v].set_hull(lo, hi);
+      if (!c.solution) {
+        // An end the box sets (not the range) is pushed out a little: a contracted end
+        // passes through the point where the graph leaves the box, tangentially at an
+        // extreme of w, so a join's witness there or a face of the star test would have to
+        // be decided to the last bit.
+        const double margin = kFaceMargin * (hi - lo);
+        double glo = lo, ghi = hi;
+        if (lo > chart.w_range[j].lo_down()) glo = std::max(chart.w_range[j].lo_down(), lo - margin);
+        if (hi < chart.w_range[j].hi_up()) ghi = std::min(chart.w_range[j].hi_up(), hi + margin);
+        if (!periodic_[v]) {
+          glo = std::max(glo, m_.vars[v].domain.lo_down());
+          ghi = std::min(ghi, m_.vars[v].domain.hi_up());
+        }
+        c.box[v].set_hull(std::min(glo, lo), std::max(ghi, hi));
+      }
       if (chart.w_range[j].lo_down() < c.box[v].lo_down()) {
         faces.push_back({StarConstraint::WLower, j, 1, c.box[v].lo_down()});
         inside = false;
@@ -864,6 +904,11 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   ac.stop = config.stop;
   ac.certificate = config.certificate;
   ac.keep_link_proofs = config.certificate != nullptr;  // the writer's finish() needs them
+  // Cut off the middle: a middle cut lies on a model's plane of symmetry (x2 = 0 on RRRRR),
+  // where singular curves meet the cut and the seam q = ±π in one point. The pieces at such a
+  // point are slivers no interval test decides (a class present only in the ulp by which a
+  // box's outward end passes π): the refinement never ended there.
+  ac.split_fraction = 31.0 / 64;
   AspectsResult solved = compute_aspects(model, ac);
   if (config.first_cover_done) config.first_cover_done(solved, config.first_cover_data);
   std::vector<int> nodes;

@@ -40,7 +40,9 @@ struct StarConstraint {
 
 struct StarLimits {
   double min_width = 1e-6;  // relative to the box's width
-  long max_boxes = 2000;  // past it the box is bisected instead (a smaller box is easier)
+  // Past it the box is bisected instead (a smaller box is easier). Near a crossing of two
+  // singular curves the pieces are thin wedges: 2000 left RRRRR's count open there.
+  long max_boxes = 8000;  // check_cert allows more (its arithmetic is not this one)
 };
 
 // `box`: U × the chart's range of w (every w(u) lies in it). v: the centre's u (n doubles),

@@ -38,6 +38,7 @@ struct AspectsConfig {
   // takes over the cores of the ranks on its node, idle once the search is over.
   int later_threads = 0;
   BisectorKind bisector = BisectorKind::RoundRobin;
+  double split_fraction = 0.5;  // where a box is cut (search/bisector.h)
   int defer_depth = 8;  // subtrees below this depth are searched in parallel
   // Other processes that search subtrees too (an MPI job); null: this process alone.
   // Not with a box budget: it counts this process's boxes only.

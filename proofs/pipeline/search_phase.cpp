@@ -37,6 +37,7 @@ struct NcspParts {
       : ev(m, c.arithmetic), constraints(m, ev), equations(ev), contractor(equations, c.grid_records),
         prover(ev, constraints, c.tau, c.max_newton_iterations, c.grid_records),
         bisector(make_bisector(c.bisector, m, c.eps)), signs(ev, m, factors) {
+    bisector->set_split_fraction(c.split_fraction);
     c.made(ev.arithmetic());
   }
   SearchParts parts() { return {contractor, prover, *bisector, constraints, signs}; }

@@ -230,6 +230,29 @@ def chart_box_grown(lines):
     return lines
 
 
+def fit_u_moved(lines, delta_of_width):
+    # A fit whose box's u (the first variable not in W) has its lower end moved by
+    # delta_of_width(width): above the origin's, or out of the root cell.
+    i = first(lines, lambda f: f[0] == "fit")
+    f = lines[i].split(" ")
+    n = (len(lines[first(lines, lambda g: g[0] == "domain")].split(" ")) - 1) // 4
+    w = {int(x) for x in f[2:2 + n]}
+    v = min(x for x in range(2 * n) if x not in w)
+    k = 2 + 3 * n + 2 * v  # fit ID W(n) W~(2n) BOX: BOX's lo of v
+    lo, hi = float.fromhex(f[k]), float.fromhex(f[k + 1])
+    f[k] = float.hex(lo + delta_of_width(hi - lo))
+    lines[i] = " ".join(f)
+    return lines
+
+
+def fit_u_shrunk(lines):
+    return fit_u_moved(lines, lambda width: 0.25 * width)
+
+
+def fit_u_out_of_root(lines):
+    return fit_u_moved(lines, lambda width: -1000.0)
+
+
 def unsplit(lines):
     # A split undone: the box before it claimed final, its pieces claimed star-shaped about
     # the centres of one half's pieces. On cubic_wide that box holds both outer aspects of
@@ -287,6 +310,8 @@ TAMPER = [
     ("prrp", cell_discarded, "discarded half"),
     ("bow_tie_pinch", refutation_forged, "refuted"),
     ("prrp", chart_box_grown, "chart"),
+    ("prrp", fit_u_shrunk, "does not hold the origin's"),
+    ("prrp", fit_u_out_of_root, "leaves the root cell"),
 ]
 
 for name, mutate, word in TAMPER:
