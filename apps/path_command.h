@@ -14,6 +14,7 @@ struct PathOptions {
   std::string result_dir;
   std::string from, to;
   int csnc = -1;  // -1: any CSNC holding both poses
+  std::string cls;   // --class SIGNS (a count directory only), empty: any class
   bool json = false;
   std::string out;   // CSV or JSON file of the waypoints, empty: none
   std::string plot;  // PNG file, empty: none
