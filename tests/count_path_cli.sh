@@ -5,11 +5,13 @@
 #   the count's pieces the path succeeds, crossing at least 2 pieces;
 # - a pose of another aspect of the same class, and one of another class: refused (exit 1);
 # - the seam model: the path of class ++ crosses q = ±π, its goal unwrapped by −1 turn;
+# - a pose on a singular curve: in no piece; RPRPR: a path across a bridge;
 # - bad input: exit 2 with a message naming the problem.
-# $1: aspects; $2: tests/models.
+# $1: aspects; $2: tests/models; $3: robots.
 set -eu
 aspects=$1
 models=$2
+robots=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "count_path_cli: $*" >&2; exit 1; }
@@ -92,6 +94,22 @@ q = [x["config"][1] for x in w]
 assert all(abs(b - a) < 1 for a, b in zip(q, q[1:])), q
 assert q[0] > -math.pi > q[-1], q
 assert abs(q[-1] - (math.pi - math.asin(0.6) - 2 * math.pi)) < 1e-9, q[-1]
+PY
+
+# A pose on the singular curve x2 = sqrt(x1^2 + 0.0001) of the bow tie: no class.
+expect 1 "^no path: no configuration of the start pose was proved in a piece the count proved connected \([0-9]+ of its boxes with such pieces hold the pose\)$" \
+  "$aspects" path "$tmp/bow" --from 0,0.01 --to 0.5,0
+
+# RPRPR: two boxes joined by a bridge (a chart on their hull, no point in both); the
+# segment between them is straight in the bridge chart's u, here the commands.
+expect 0 "^2 aspects" "$aspects" count "$robots/rprpr.robot" --out "$tmp/rprpr"
+"$aspects" path "$tmp/rprpr" --from 2.2,-4.8 --to 2.6,-5.2 --json > "$tmp/rprpr.json"
+python3 - "$tmp/rprpr.json" <<'PY' || fail "bad bridge path JSON"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["outcome"] == "found" and d["bridges"] >= 1, (d["outcome"], d.get("bridges"))
+b = [s for s in d["segments"] if s["how"] == "bridge"]
+assert len(b) == d["bridges"] and all(s["straight_in"] == ["q1", "q2"] for s in b), b
 PY
 
 # Bad input: exit 2, the problem named.
