@@ -63,9 +63,9 @@ int run_count(const CountOptions& o) {
   if (!(o.eps > 0)) throw UsageError("--eps must be positive");
   if (!(o.min_width > 0 && o.min_width < 1)) throw UsageError("--min-width must be in (0, 1)");
   if (o.time_limit < 0) throw UsageError("--time-limit must be >= 0");
-  if (!o.out.empty()) prepare_out(o.out);
   Model m = o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
                                  : load_model(o.model_path);
+  if (!o.out.empty()) prepare_out(o.out);
   StopCondition stop;
   if (o.time_limit > 0) stop.set_time_limit(o.time_limit);
   stop.set_watch_signals(true);

@@ -127,6 +127,8 @@ expect 2 "^aspects: --out: not available for a path through a count's pieces" \
   "$aspects" path "$tmp/bow" --from -0.5,0 --to 0.5,0 --out "$tmp/p.csv"
 expect 2 "^aspects: --out: '$tmp/bow_solve' holds a solve's result" \
   "$aspects" count "$bow" --out "$tmp/bow_solve"
+expect 2 "^aspects: --out: '$tmp/bow/count.pieces' exists and is not a directory" \
+  "$aspects" count "$bow" --out "$tmp/bow/count.pieces"
 # A damaged pieces file: refused by its checksum, or as truncated.
 mkdir "$tmp/edited" "$tmp/truncated"
 cp "$tmp/bow/count.pieces" "$tmp/edited/"
