@@ -7,6 +7,7 @@
 #include <set>
 
 #include "counting/chart.h"
+#include "counting/star_test.h"
 #include "hansen_sengupta.h"
 #include "model/determinant_factors.h"
 #include "results/point_command.h"
@@ -383,6 +384,73 @@ class Planner {
     return true;
   }
 
+  // The piece proved connected again, as the count proved it, on its box B as recorded: a
+  // chart on B (w(U) ⊆ R, unique in W̃ ⊇ B_w), B inside the domain; then either the whole
+  // graph (R ⊆ B_w, every factor of the class's sign on B) or the star-shaped test about its
+  // centre, with the faces of B_w that R crosses and the factors not of one sign on B. A
+  // solve's solution box is taken as the solve proved it (P1, P2: check_cert).
+  bool piece_connected(int nd, std::string& why) {
+    auto it = connected_cache_.find(nd);
+    if (it != connected_cache_.end()) return it->second || (why = connected_why_[nd], false);
+    const CountPieceCell& cell = cell_of(nd);
+    const CountPiece& p = piece_of(nd);
+    std::string fail;
+    bool ok = cell.solution;
+    if (!ok) ok = charted_piece_connected(cell, p, nd, fail);
+    if (!ok)
+      why = "box " + std::to_string(cell.id) + "'s piece of class " +
+            class_signs(p.cls, fg_.factors()) + " was not proved connected again (" + fail + ")";
+    connected_cache_[nd] = ok;
+    connected_why_[nd] = why;
+    return ok;
+  }
+
+  bool charted_piece_connected(const CountPieceCell& cell, const CountPiece& p, int nd,
+                               std::string& fail) {
+    const Box box = box_of(cell);
+    for (int v = 0; v < nv_; ++v)
+      if (!m_.vars[v].periodic && !m_.vars[v].domain.contains(box[v]))
+        return fail = "the box leaves the domain", false;
+    Chart chart;
+    if (prove_chart(ev_, box, cell.w, ws_, chart) != ChartVerdict::Proved)
+      return fail = "no chart", false;
+    Box z = box;
+    std::vector<StarConstraint> tests;
+    for (int j = 0; j < n_; ++j) {
+      const int v = chart.w[j];
+      z[v] = chart.w_range[j];
+      if (chart.w_range[j].lo_down() < box[v].lo_down())
+        tests.push_back({StarConstraint::WLower, j, 1, box[v].lo_down()});
+      if (chart.w_range[j].hi_up() > box[v].hi_up())
+        tests.push_back({StarConstraint::WUpper, j, 1, box[v].hi_up()});
+    }
+    std::vector<Interval> g;
+    const bool defined = fg_.values(ev_, box, g);
+    bool certain = defined;
+    for (int i = 0; i < fg_.factors(); ++i) {
+      const bool positive = (p.cls >> i) & 1;
+      if (defined && (positive ? g[i].certainly_pos() : g[i].certainly_neg())) continue;
+      certain = false;
+      tests.push_back({StarConstraint::Factor, i, positive ? 1 : -1, 0});
+    }
+    // The whole graph over U, in the box, of the class's signs.
+    if (certain && tests.empty()) return true;
+    if (p.w_vars.empty()) return fail = "the graph leaves the box, and no centre", false;
+    Config centre;
+    std::string why;
+    if (!piece_point(nd, centre, why)) return fail = "its centre", false;
+    if (p.w_vars != cell.w) return fail = "its centre is not in the box's chart", false;
+    std::vector<double> v;
+    std::vector<Interval> wv;
+    for (int u : chart.u) v.push_back(centre.lo[u]);
+    for (int w : chart.w) wv.emplace_back(centre.lo[w], centre.hi[w]);
+    long boxes = 0;
+    if (star_test(ev_, fg_, chart, z, tests, v, wv, StarLimits{}, ws_, boxes) !=
+        StarVerdict::StarShaped)
+      return fail = "star-shaped test", false;
+    return true;
+  }
+
   // A join proved again: its point in both boxes, or its bridge chart.
   bool join_holds(int j, Config& point, std::string& why) {
     const CountJoin& J = P_.joins[j];
@@ -427,6 +495,13 @@ class Planner {
     std::vector<PieceWaypoint> wps;
     std::vector<PieceSegment> segs;
     int point_joins = 0, bridges = 0;
+    std::string why;
+    for (const Step& st : r)
+      if (!piece_connected(st.node, why)) {
+        dead_node_.insert(st.node);
+        out.failure = why;
+        return false;
+      }
     const Anchor& s = starts[route.start];
     // The frame of the first box: the start pose lies in it at turns s.turns, so its
     // configurations are at −s.turns in the path's coordinates.
@@ -440,7 +515,6 @@ class Planner {
       segs.push_back({p.how == CountPiece::Star ? PieceSegment::Star : PieceSegment::Graph,
                       cell_of(nd).id, chart_complement(m_, cell_of(nd).w)});
     };
-    std::string why;
     for (size_t i = 0; i < r.size(); ++i) {
       const int nd = r[i].node;
       if (i > 0) {
@@ -534,6 +608,8 @@ class Planner {
   std::vector<std::vector<Edge>> adj_;
   std::set<int> dead_node_, dead_join_;
   std::map<int, Config> point_cache_;
+  std::map<int, bool> connected_cache_;
+  std::map<int, std::string> connected_why_;
 };
 
 }  // namespace

@@ -12,8 +12,9 @@
 // straight in the u-coordinates of its piece's chart (or of the bridge's): the
 // configuration follows (u, w(u)), which is not a straight line in pose space unless u is
 // the pose. Each segment's ends are proved here (iteration (9) of Hansen–Sengupta at the
-// point, the enclosure inside the box, every factor of the class's sign); the pieces'
-// connectedness is the count's proof, as recorded in the directory.
+// point, the enclosure inside the box, every factor of the class's sign); each piece
+// crossed is proved connected again (its chart on the box, then the signs or the star test),
+// but a solve's solution box, taken as the solve proved it (P1, P2: check_cert).
 #pragma once
 
 #include <cstdint>
