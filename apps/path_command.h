@@ -2,6 +2,7 @@
 // [--plot FILE]`: plans a certified singularity-free motion between two poses inside one
 // CSNC (planning/path_plan.h, where the certification argument is) and prints a one-line
 // summary, or the JSON object; `--out` writes the waypoints (planning/path_output.h).
+// On a count directory (`aspects count --out`) it runs piece_path_command.h instead.
 #pragma once
 
 #include <string>

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "counting/factor_gradients.h"
-#include "results/piece_path.h"
+#include "piece_path.h"
 #include "results/pose.h"
 #include "results/usage_error.h"
 

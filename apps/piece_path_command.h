@@ -1,5 +1,5 @@
 // `aspects path COUNT_DIR --from POSE --to POSE [--class SIGNS] [--json]`: a certified
-// singularity-free path through the pieces of a count (results/piece_path.h), when DIR was
+// singularity-free path through the pieces of a count (planning/piece_path.h), when DIR was
 // written by `aspects count MODEL --out DIR`. Prints one line, or the JSON object.
 #pragma once
 

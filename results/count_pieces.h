@@ -1,6 +1,6 @@
 // The pieces file of a count directory (`aspects count MODEL --out DIR` writes
 // DIR/count.pieces beside DIR/summary.json): what `aspects path DIR` plans through
-// (results/piece_path.h). It holds the model text, the count's bounds, and of its final
+// (planning/piece_path.h). It holds the model text, the count's bounds, and of its final
 // cover only what a path can use: each box holding a piece proved connected, the chart of
 // that box (its w), each such piece with how it was proved connected (the whole graph
 // over the box's u, or star-shaped about a centre) and its centre, and every joined

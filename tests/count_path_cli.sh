@@ -1,5 +1,5 @@
 #!/bin/sh
-# `aspects path` through the pieces of a count (`aspects count --out DIR`, results/piece_path.h):
+# `aspects path` through the pieces of a count (`aspects count --out DIR`, planning/piece_path.h):
 # - the bow tie with a neck (3 aspects): (-0.5, 0) and (0.5, 0) lie in two CSNCs of the solve
 #   (the neck, 0.02 wide, is not resolved at its eps), so the CSNC path finds none; through
 #   the count's pieces the path succeeds, crossing at least 2 pieces;

@@ -1,4 +1,4 @@
-// The path through a count's pieces (results/piece_path.h) re-proves what it crosses: a
+// The path through a count's pieces (planning/piece_path.h) re-proves what it crosses: a
 // forged pieces file that claims a connected piece where there is none does not make it
 // print a path. And the pieces file itself: encoded and decoded to the same records.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include "counting/factor_gradients.h"
 #include "model/model.h"
 #include "results/count_pieces.h"
-#include "results/piece_path.h"
+#include "piece_path.h"
 
 using namespace aspects;
 

@@ -1,4 +1,4 @@
-#include "results/piece_path.h"
+#include "piece_path.h"
 
 #include <algorithm>
 #include <cmath>
