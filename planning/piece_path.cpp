@@ -322,9 +322,10 @@ class Planner {
     return {};
   }
 
-  // The inward enclosure of box + 2πk: every point of it lies in box + 2πk.
-  Box shifted_inward(const Box& box, const std::vector<int8_t>& k) const {
-    Box b = box;
+  // The inward enclosure of box + 2πk: every point of it lies in box + 2πk. False when it
+  // is empty (a box narrower than the rounding).
+  bool shifted_inward(const Box& box, const std::vector<int8_t>& k, Box& b) const {
+    b = box;
     for (int v = 0; v < nv_; ++v) {
       if (k[v] == 0) continue;
       Interval t;
@@ -332,10 +333,10 @@ class Planner {
       Interval lo, hi;
       mpfi_add_d(lo.get(), t.get(), box[v].lo_down());
       mpfi_add_d(hi.get(), t.get(), box[v].hi_up());
-      b[v].set_hull(lo.hi_up(), std::max(lo.hi_up(), hi.lo_down()));
-      if (lo.hi_up() > hi.lo_down()) b[v].set_hull(1, 0);  // empty: nothing is inside
+      if (!(lo.hi_up() <= hi.lo_down())) return false;
+      b[v].set_hull(lo.hi_up(), hi.lo_down());
     }
-    return b;
+    return true;
   }
   Box hull_outward(const Box& a, const Box& b, const std::vector<int8_t>& k) const {
     Box h = a;
@@ -457,8 +458,9 @@ class Planner {
     const Box a = box_of(P_.cells[cell_index_.at(J.a)]), b = box_of(P_.cells[cell_index_.at(J.b)]);
     bool ok = false;
     if (!J.bridge) {
+      Box b_shifted;
       ok = prove_in(J.w, J.u, J.hint, a, J.cls, point) &&
-           inside(point, shifted_inward(b, J.shift), all_vars());
+           shifted_inward(b, J.shift, b_shifted) && inside(point, b_shifted, all_vars());
     } else {
       const Box hull = hull_outward(a, b, J.shift);
       Chart chart;
