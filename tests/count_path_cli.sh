@@ -44,7 +44,8 @@ pieces=$(sed -n 's/^certified singularity-free path through \([0-9]*\) pieces.*/
 [ "$pieces" -ge 2 ] || fail "the path crosses $pieces piece(s), expected at least 2"
 # The JSON: starts and ends at the poses, every segment's piece a box of the count, the
 # waypoints' x1 going from -0.5 to 0.5 through the neck (|x2| < 0.01 at x1 = 0).
-"$aspects" path "$tmp/bow" --from -0.5,0 --to 0.5,0 --json > "$tmp/bow.json"
+"$aspects" path "$tmp/bow" --from -0.5,0 --to 0.5,0 --json > "$tmp/bow.json" ||
+  { cat "$tmp"/*.json >&2; fail "path --json failed"; }
 python3 - "$tmp/bow.json" <<'PY' || fail "bad path JSON"
 import json, sys
 d = json.load(open(sys.argv[1]))
@@ -82,7 +83,8 @@ seam=$models/count_seam.robot
 expect 0 "^2 aspects" "$aspects" count "$seam" --out "$tmp/seam"
 expect 0 "other classes holding both poses \(other working modes\): \+\+ \(use --class\)" \
   "$aspects" path "$tmp/seam" --from -0.9 --to 0.9
-"$aspects" path "$tmp/seam" --from -0.9 --to 0.9 --class ++ --json > "$tmp/seam.json"
+"$aspects" path "$tmp/seam" --from -0.9 --to 0.9 --class ++ --json > "$tmp/seam.json" ||
+  { cat "$tmp"/*.json >&2; fail "path --json failed"; }
 python3 - "$tmp/seam.json" <<'PY' || fail "bad seam path JSON"
 import json, math, sys
 d = json.load(open(sys.argv[1]))
@@ -103,7 +105,8 @@ expect 1 "^no path: no configuration of the start pose was proved in a piece the
 # RPRPR: two boxes joined by a bridge (a chart on their hull, no point in both); the
 # segment between them is straight in the bridge chart's u, here the commands.
 expect 0 "^2 aspects" "$aspects" count "$robots/rprpr.robot" --out "$tmp/rprpr"
-"$aspects" path "$tmp/rprpr" --from 2.2,-4.8 --to 2.6,-5.2 --json > "$tmp/rprpr.json"
+"$aspects" path "$tmp/rprpr" --from 2.2,-4.8 --to 2.6,-5.2 --json > "$tmp/rprpr.json" ||
+  { cat "$tmp"/*.json >&2; fail "path --json failed"; }
 python3 - "$tmp/rprpr.json" <<'PY' || fail "bad bridge path JSON"
 import json, sys
 d = json.load(open(sys.argv[1]))
