@@ -9,6 +9,7 @@
 #include "counting/chart.h"
 #include "counting/star_test.h"
 #include "hansen_sengupta.h"
+#include "strong_regularity.h"
 #include "model/determinant_factors.h"
 #include "results/point_command.h"
 #include "results/pose.h"
@@ -385,19 +386,22 @@ class Planner {
     return true;
   }
 
-  // The piece proved connected again, as the count proved it, on its box B as recorded: a
-  // chart on B (w(U) ⊆ R, unique in W̃ ⊇ B_w), B inside the domain; then either the whole
-  // graph (R ⊆ B_w, every factor of the class's sign on B) or the star-shaped test about its
-  // centre, with the faces of B_w that R crosses and the factors not of one sign on B. A
-  // solve's solution box is taken as the solve proved it (P1, P2: check_cert).
+  // The segments inside a piece proved again on its box B as recorded. First a chart on B
+  // (w unknown, unique in W̃ ⊇ B_w, w(U) ⊆ R; every point of B on V is on its graph). Then
+  // either the whole graph over U lies in W_s: U × R in the domain, and on it every factor
+  // of the class's sign, or P2 (Fx and Fq regular: every factor, a determinant or a diagonal
+  // entry of a triangular Jacobian, nonzero, so of one sign along the graph, the sign of the
+  // points proved on it) — then any segment of U lifts into W_s; or, as the count proved a
+  // star, B in the domain and the star-shaped test about the piece's centre, with the faces
+  // of B_w that R crosses and the factors not of one sign on B — then any segment from the
+  // centre to a point of the piece lifts into it.
   bool piece_connected(int nd, std::string& why) {
     auto it = connected_cache_.find(nd);
     if (it != connected_cache_.end()) return it->second || (why = connected_why_[nd], false);
     const CountPieceCell& cell = cell_of(nd);
     const CountPiece& p = piece_of(nd);
     std::string fail;
-    bool ok = cell.solution;
-    if (!ok) ok = charted_piece_connected(cell, p, nd, fail);
+    const bool ok = segments_hold(cell, p, nd, fail);
     if (!ok)
       why = "box " + std::to_string(cell.id) + "'s piece of class " +
             class_signs(p.cls, fg_.factors()) + " was not proved connected again (" + fail + ")";
@@ -406,41 +410,51 @@ class Planner {
     return ok;
   }
 
-  bool charted_piece_connected(const CountPieceCell& cell, const CountPiece& p, int nd,
-                               std::string& fail) {
-    const Box box = box_of(cell);
+  bool in_domain(const Box& b) const {
     for (int v = 0; v < nv_; ++v)
-      if (!m_.vars[v].periodic && !m_.vars[v].domain.contains(box[v]))
-        return fail = "the box leaves the domain", false;
+      if (!m_.vars[v].periodic && !m_.vars[v].domain.contains(b[v])) return false;
+    return true;
+  }
+
+  bool of_class(const std::vector<Interval>& g, uint32_t cls) const {
+    for (size_t i = 0; i < g.size(); ++i)
+      if (!((cls >> i) & 1 ? g[i].certainly_pos() : g[i].certainly_neg())) return false;
+    return true;
+  }
+
+  bool segments_hold(const CountPieceCell& cell, const CountPiece& p, int nd, std::string& fail) {
+    const Box box = box_of(cell);
     Chart chart;
     if (prove_chart(ev_, box, cell.w, ws_, chart) != ChartVerdict::Proved)
       return fail = "no chart", false;
     Box z = box;
+    for (int j = 0; j < n_; ++j) z[chart.w[j]] = chart.w_range[j];
+    std::vector<Interval> g;
+    if (in_domain(z) && ((fg_.values(ev_, z, g) && of_class(g, p.cls)) || regular_on(z))) {
+      proof_[nd] = CountPiece::Graph;
+      return true;
+    }
+    // The star-shaped test, as the count ran it.
+    if (!in_domain(box)) return fail = "the box leaves the domain", false;
     std::vector<StarConstraint> tests;
     for (int j = 0; j < n_; ++j) {
       const int v = chart.w[j];
-      z[v] = chart.w_range[j];
       if (chart.w_range[j].lo_down() < box[v].lo_down())
         tests.push_back({StarConstraint::WLower, j, 1, box[v].lo_down()});
       if (chart.w_range[j].hi_up() > box[v].hi_up())
         tests.push_back({StarConstraint::WUpper, j, 1, box[v].hi_up()});
     }
-    std::vector<Interval> g;
     const bool defined = fg_.values(ev_, box, g);
-    bool certain = defined;
     for (int i = 0; i < fg_.factors(); ++i) {
       const bool positive = (p.cls >> i) & 1;
       if (defined && (positive ? g[i].certainly_pos() : g[i].certainly_neg())) continue;
-      certain = false;
       tests.push_back({StarConstraint::Factor, i, positive ? 1 : -1, 0});
     }
-    // The whole graph over U, in the box, of the class's signs.
-    if (certain && tests.empty()) return true;
-    if (p.w_vars.empty()) return fail = "the graph leaves the box, and no centre", false;
+    if (p.w_vars.empty()) return fail = "its graph is not of one class, and it has no centre", false;
+    if (p.w_vars != cell.w) return fail = "its centre is not in the box's chart", false;
     Config centre;
     std::string why;
     if (!piece_point(nd, centre, why)) return fail = "its centre", false;
-    if (p.w_vars != cell.w) return fail = "its centre is not in the box's chart", false;
     std::vector<double> v;
     std::vector<Interval> wv;
     for (int u : chart.u) v.push_back(centre.lo[u]);
@@ -449,7 +463,15 @@ class Planner {
     if (star_test(ev_, fg_, chart, z, tests, v, wv, StarLimits{}, ws_, boxes) !=
         StarVerdict::StarShaped)
       return fail = "star-shaped test", false;
+    proof_[nd] = CountPiece::Star;
     return true;
+  }
+
+  // P2 on the box: Fx and Fq strongly regular over it.
+  bool regular_on(const Box& box) {
+    IMatrix J;
+    return ev_.jacobian_x(box, J) == EvalStatus::Defined && strongly_regular(J) &&
+           ev_.jacobian_q(box, J) == EvalStatus::Defined && strongly_regular(J);
   }
 
   // A join proved again: its point in both boxes, or its bridge chart.
@@ -512,9 +534,9 @@ class Planner {
     wps.push_back(waypoint(PieceWaypoint::Start, cell_of(s.node).id, s.config,
                            std::vector<int>(nv_, 0)));
     // Adds the segment to the last waypoint inside piece nd (how: its proof).
+    auto star = [&](int nd) { return proof_.at(nd) == CountPiece::Star; };
     auto segment_in = [&](int nd) {
-      const CountPiece& p = piece_of(nd);
-      segs.push_back({p.how == CountPiece::Star ? PieceSegment::Star : PieceSegment::Graph,
+      segs.push_back({star(nd) ? PieceSegment::Star : PieceSegment::Graph,
                       cell_of(nd).id, chart_complement(m_, cell_of(nd).w)});
     };
     for (size_t i = 0; i < r.size(); ++i) {
@@ -546,8 +568,7 @@ class Planner {
           }
           segs.push_back({PieceSegment::Bridge, cell_of(r[i - 1].node).id,
                           chart_complement(m_, J.w)});
-          wps.push_back(waypoint(piece_of(nd).how == CountPiece::Star ? PieceWaypoint::Centre
-                                                                       : PieceWaypoint::Point,
+          wps.push_back(waypoint(star(nd) ? PieceWaypoint::Centre : PieceWaypoint::Point,
                                  cell_of(nd).id, q, T_next));
           ++bridges;
         }
@@ -559,7 +580,7 @@ class Planner {
       const bool at_point = (wps.back().kind == PieceWaypoint::Point ||
                              wps.back().kind == PieceWaypoint::Centre) &&
                             wps.back().cell == cell_of(nd).id;
-      if (!at_point && (piece_of(nd).how == CountPiece::Star || bridge_next)) {
+      if (!at_point && (star(nd) || bridge_next)) {
         Config q;
         if (!piece_point(nd, q, why)) {
           dead_node_.insert(nd);
@@ -567,8 +588,7 @@ class Planner {
           return false;
         }
         segment_in(nd);
-        wps.push_back(waypoint(piece_of(nd).how == CountPiece::Star ? PieceWaypoint::Centre
-                                                                     : PieceWaypoint::Point,
+        wps.push_back(waypoint(star(nd) ? PieceWaypoint::Centre : PieceWaypoint::Point,
                                cell_of(nd).id, q, T));
       }
       if (last) {
@@ -611,6 +631,7 @@ class Planner {
   std::set<int> dead_node_, dead_join_;
   std::map<int, Config> point_cache_;
   std::map<int, bool> connected_cache_;
+  std::map<int, CountPiece::How> proof_;  // how each piece was proved again
   std::map<int, std::string> connected_why_;
 };
 

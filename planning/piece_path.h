@@ -3,8 +3,9 @@
 // that the count's joined pieces connect, whatever CSNCs of a solve they lie in.
 //
 // A piece P = W_s ∩ B proved connected is, in its box's chart (u, w(u)), the graph of w over
-// a set S of u's: the whole box's U (ConnectedBy Graph: every segment of U lifts into P) or
-// a set star-shaped about a centre v (Star: the segment from v to any u of S lies in S). A
+// a set S of u's. Proved again here, either the whole graph over the box's U lies in W_s
+// (Graph: every segment of U lifts into W_s) or S is star-shaped about a centre v (Star: the
+// segment from v to any u of S lies in S). A
 // joined adjacency is a point of W_s in both boxes, or a bridge: a chart on the hull of both
 // boxes whose graph lies in W_s (every segment of the hull's u lifts into W_s). So a path
 // goes: the start A (proved in a piece P_0), straight in P_0's u to its centre (a Star
@@ -12,9 +13,9 @@
 // straight in the u-coordinates of its piece's chart (or of the bridge's): the
 // configuration follows (u, w(u)), which is not a straight line in pose space unless u is
 // the pose. Each segment's ends are proved here (iteration (9) of Hansen–Sengupta at the
-// point, the enclosure inside the box, every factor of the class's sign); each piece
-// crossed is proved connected again (its chart on the box, then the signs or the star test),
-// but a solve's solution box, taken as the solve proved it (P1, P2: check_cert).
+// point, the enclosure inside the box, every factor of the class's sign), and so is each
+// piece and bridge crossed: nothing of the pieces file is taken on trust but the count's
+// bounds and joins behind a refusal "in different aspects".
 #pragma once
 
 #include <cstdint>

@@ -21,7 +21,7 @@ namespace {
 //   "aspects-count-pieces\n" u32 version
 //   u32 nv  u32 n  u32 p  i64 precision_bits  f64 eps  i32 lower  i32 upper
 //   str model_file  str model_source  p × str factor
-//   u32 C  C × (i32 id  nv × (f64 lo  f64 hi)  n × i32 w  u8 solution
+//   u32 C  C × (i32 id  nv × (f64 lo  f64 hi)  n × i32 w
 //               u32 P  P × (u32 cls  u8 how  u8 has_point
 //                           [n × i32 w_var  n × f64 u  n × (f64 lo  f64 hi)]))
 //   u32 J  J × (i32 a  i32 b  u32 cls  nv × i8 shift  u8 bridge  n × i32 w
@@ -122,7 +122,6 @@ CountPieces count_pieces_of(const Model& model, const CountResult& r, double eps
     // A cell with no fit and a connected piece is a solve's solution box: its chart is P1's,
     // the commands over the pose.
     cell.w = c.fit == CountCellRecord::Charted ? c.w : model.command;
-    cell.solution = c.fit == CountCellRecord::NoFit;
     if (c.fit != CountCellRecord::Charted && c.fit != CountCellRecord::NoFit) continue;
     for (const CountCellRecord::Piece& p : c.pieces) {
       if (p.state != PieceState::Connected || p.connected_by == CountCellRecord::NotConnected)
@@ -176,7 +175,6 @@ std::string encode_count_pieces(const CountPieces& P) {
     w.i32(c.id);
     for (double x : c.box) w.f64(x);
     for (int v : c.w) w.i32(v);
-    w.u8(c.solution);
     w.u32(uint32_t(c.pieces.size()));
     for (const CountPiece& p : c.pieces) {
       w.u32(p.cls);
@@ -230,7 +228,7 @@ CountPieces decode_count_pieces(const std::string& bytes, const std::string& wha
   P.model_file = r.str(4096);
   P.model_source = r.str(1u << 24);
   for (uint32_t i = 0; i < p; ++i) P.factors.push_back(r.str(1u << 20));
-  const uint32_t C = r.count(13 + 16 * size_t(P.nv));
+  const uint32_t C = r.count(12 + 16 * size_t(P.nv));
   std::map<int32_t, size_t> index;
   for (uint32_t i = 0; i < C; ++i) {
     CountPieceCell c;
@@ -238,9 +236,6 @@ CountPieces decode_count_pieces(const std::string& bytes, const std::string& wha
     if (c.id < 0 || (i > 0 && c.id <= P.cells.back().id)) r.fail("cell ids not increasing");
     c.box = r.pairs(P.nv);
     c.w = r.vars(P.n, P.nv);
-    const uint8_t solution = r.u8();
-    if (solution > 1) r.fail("bad solution flag");
-    c.solution = solution;
     const uint32_t np = r.count(6);
     for (uint32_t k = 0; k < np; ++k) {
       CountPiece q;

@@ -7,8 +7,8 @@
 // adjacency between two such pieces (a point of W_s in both boxes, or a bridge chart).
 //
 // Like the result index, it is the engine's record, not a certificate: path re-proves every
-// point it goes through, every bridge and every piece it crosses (but the solve's solution
-// boxes, whose P1 and P2 check_cert verifies in `aspects count --cert`'s certificate).
+// point it goes through, every bridge and every piece it crosses; only its refusal "in
+// different aspects" rests on the recorded bounds and joins.
 // Binary, little-endian, versioned, ending with a SHA-256 of its bytes; any anomaly is an
 // IndexError naming the file.
 #pragma once
@@ -38,9 +38,6 @@ struct CountPieceCell {
   int32_t id = 0;              // the count's cell id
   std::vector<double> box;     // nv lo/hi pairs, model order
   std::vector<int> w;          // the chart's w (n variables; the commands for a solve's box)
-  // A solution box of the first cover (its graph over the pose box is P1 of the solve);
-  // otherwise the count proved a chart on it.
-  bool solution = false;
   std::vector<CountPiece> pieces;  // the pieces proved connected, by increasing class
 };
 

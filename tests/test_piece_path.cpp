@@ -55,7 +55,6 @@ TEST(PiecePath, FileRoundTrip) {
     EXPECT_EQ(Q.cells[i].id, P.cells[i].id);
     EXPECT_EQ(Q.cells[i].box, P.cells[i].box);
     EXPECT_EQ(Q.cells[i].w, P.cells[i].w);
-    EXPECT_EQ(Q.cells[i].solution, P.cells[i].solution);
     ASSERT_EQ(Q.cells[i].pieces.size(), P.cells[i].pieces.size());
     for (size_t k = 0; k < P.cells[i].pieces.size(); ++k) {
       EXPECT_EQ(Q.cells[i].pieces[k].cls, P.cells[i].pieces[k].cls);
@@ -74,8 +73,8 @@ TEST(PiecePath, FileRoundTrip) {
 }
 
 // A forged cell spanning the top and bottom aspects (class -, disjoint), claimed one
-// star-shaped piece about a point of the top: were it trusted, the path would run from
-// the top to the bottom through it. The star-shaped test, run again, refuses it.
+// star-shaped piece about a point of the top, or the whole graph: were it trusted, the path
+// would run from the top to the bottom through it. Proved again, it is refused.
 TEST(PiecePath, ForgedPieceIsProvedAgainAndRefused) {
   CountPieces P = bow_tie_pieces();
   {
@@ -87,7 +86,6 @@ TEST(PiecePath, ForgedPieceIsProvedAgainAndRefused) {
   forged.id = P.cells.back().id + 1;
   forged.box = {0.4, 0.6, -1, 1, 0.4, 0.6, -5, 5};  // x1, x2, q1, q2
   forged.w = {2, 3};                                // the commands over the pose
-  forged.solution = false;
   CountPiece star;
   star.how = CountPiece::Star;
   star.cls = 0;  // class -
@@ -97,10 +95,19 @@ TEST(PiecePath, ForgedPieceIsProvedAgainAndRefused) {
   star.hint = {0.5 - 1e-9, 0.5 + 1e-9, q2 - 1e-9, q2 + 1e-9};
   forged.pieces.push_back(star);
   P.cells.push_back(forged);
-  CountDirectory d = directory_of(P, "forged");
+  {
+    CountDirectory d = directory_of(P, "forged");
+    const PiecePathResult r = plan(d, {0.5, 0.9}, {0.5, -0.9});
+    EXPECT_EQ(r.outcome, PiecePathOutcome::ProofFailed);
+    EXPECT_NE(r.failure.find("piece of class - was not proved connected again (star-shaped test)"),
+              std::string::npos)
+        << r.failure;
+  }
+  // Claimed the whole graph over its pose part (as a solve's solution box): proved again too.
+  P.cells.back().pieces.back().how = CountPiece::Graph;
+  CountDirectory d = directory_of(P, "forged_solution");
   const PiecePathResult r = plan(d, {0.5, 0.9}, {0.5, -0.9});
   EXPECT_EQ(r.outcome, PiecePathOutcome::ProofFailed);
-  EXPECT_NE(r.failure.find("piece of class - was not proved connected again (star-shaped test)"),
-            std::string::npos)
+  EXPECT_NE(r.failure.find("piece of class - was not proved connected again"), std::string::npos)
       << r.failure;
 }
