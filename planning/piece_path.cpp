@@ -72,7 +72,7 @@ struct Config {
 class Planner {
  public:
   Planner(const CountDirectory& d, ModelEvaluator& ev, const FactorGradients& fg)
-      : d_(d), P_(d.pieces), m_(d.model), ev_(ev), fg_(fg), nv_(int(P_.nv)), n_(int(P_.n)) {
+      : P_(d.pieces), m_(d.model), ev_(ev), fg_(fg), nv_(int(P_.nv)), n_(int(P_.n)) {
     for (size_t c = 0; c < P_.cells.size(); ++c) {
       cell_index_[P_.cells[c].id] = int(c);
       for (size_t k = 0; k < P_.cells[c].pieces.size(); ++k) {
@@ -252,8 +252,9 @@ class Planner {
            class_of(out) == int64_t(cls);
   }
 
-  // The configurations of a pose proved in a connected piece of a cell: P1's command of the
-  // box at the pose (Newton, then Hansen–Sengupta at the point), one per cell.
+  // The configurations of a pose proved in a connected piece of a cell: a command at the
+  // pose proved inside the box as `query` proves one (Newton, then Hansen–Sengupta at the
+  // point), one per cell, its class by the factors' enclosures there.
   std::vector<Anchor> anchors_of(const std::vector<double>& pose, long& cells) {
     std::vector<Anchor> out;
     cells = 0;
@@ -616,7 +617,6 @@ class Planner {
     return true;
   }
 
-  const CountDirectory& d_;
   const CountPieces& P_;
   const Model& m_;
   ModelEvaluator& ev_;
