@@ -37,7 +37,8 @@ void progress_line(int round, const CountBounds& b, long cells, const long* why,
 void prepare_out(const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (dir.find('\0') != std::string::npos) throw UsageError("--out: the path contains a NUL character");
+  if (dir.find('\0') != std::string::npos)
+    throw UsageError("--out: the path contains a NUL character");
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw UsageError("--out: '" + dir + "' exists and is not a directory");
   if (fs::exists(fs::path(dir) / kResultIndexName, ec))

@@ -295,7 +295,8 @@ class Planner {
         start_of(nodes_.size(), -1);
     std::deque<int> queue;
     for (size_t i = 0; i < starts.size(); ++i)
-      if (starts[i].cls == c && from_join[starts[i].node] == -2 && !dead_node_.count(starts[i].node)) {
+      if (starts[i].cls == c && from_join[starts[i].node] == -2 &&
+          !dead_node_.count(starts[i].node)) {
         from_join[starts[i].node] = -1;
         start_of[starts[i].node] = int(i);
         queue.push_back(starts[i].node);
@@ -451,7 +452,8 @@ class Planner {
       if (defined && (positive ? g[i].certainly_pos() : g[i].certainly_neg())) continue;
       tests.push_back({StarConstraint::Factor, i, positive ? 1 : -1, 0});
     }
-    if (p.w_vars.empty()) return fail = "its graph is not of one class, and it has no centre", false;
+    if (p.w_vars.empty())
+      return fail = "its graph is not of one class, and it has no centre", false;
     if (p.w_vars != cell.w) return fail = "its centre is not in the box's chart", false;
     Config centre;
     std::string why;

@@ -303,7 +303,8 @@ bool is_count_directory(const std::string& dir) {
 CountPieces read_count_pieces(const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (dir.find('\0') != std::string::npos) throw IndexError("DIR: the path contains a NUL character");
+  if (dir.find('\0') != std::string::npos)
+    throw IndexError("DIR: the path contains a NUL character");
   if (!fs::is_directory(dir, ec)) throw IndexError("DIR " + dir + ": no such directory");
   const std::string path = (fs::path(dir) / kCountPiecesName).string();
   std::ifstream in(path, std::ios::binary);
