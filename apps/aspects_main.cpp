@@ -64,8 +64,10 @@ void add_query(CLI::App& app, Commands& c) {
 void add_path(CLI::App& app, Commands& c) {
   PathOptions& po = c.path_options;
   auto* path = c.path = app.add_subcommand(
-      "path", "Certified singularity-free path between two poses in one CSNC");
-  path->add_option("RESULT_DIR", po.result_dir, "directory written by `aspects solve --out`")
+      "path", "Certified singularity-free path between two poses in one CSNC, or through the "
+              "pieces of a count");
+  path->add_option("RESULT_DIR", po.result_dir,
+                   "directory written by `aspects solve --out` or `aspects count --out`")
       ->required();
   path->add_option("--from", po.from, "start pose, comma-separated in pose order")->required();
   path->add_option("--to", po.to, "goal pose, comma-separated in pose order")->required();
@@ -76,6 +78,8 @@ void add_path(CLI::App& app, Commands& c) {
                                         : "CSNCs are numbered from 0 (leave --csnc out for any "
                                           "CSNC), got " + v;
       });
+  path->add_option("--class", po.cls,
+                   "with a count directory: stay in this sign class (e.g. +-, one sign a factor)");
   path->add_flag("--json", po.json, "print one JSON object");
   path->add_option("--out", po.out, "write the waypoints to FILE.csv or FILE.json (temporary name, then renamed)");
   path->add_option("--plot", po.plot, "write a PNG of the CSNC and the path (python3, matplotlib)");
@@ -106,6 +110,9 @@ void add_count(CLI::App& app, Commands& c) {
   count->add_flag("--progress", co.progress, "progress on stderr even when it is not a terminal");
   count->add_option("--cert", co.cert,
                     "write the count's certificate to FILE (check it with check_cert)");
+  count->add_option("--out", co.out,
+                    "write DIR/count.pieces (the pieces, charts, centres and joins that "
+                    "`aspects path DIR` plans through) and DIR/summary.json");
 }
 
 void add_verify(CLI::App& app, Commands& c) {

@@ -16,6 +16,7 @@ struct CountOptions {
   bool json = false;
   bool progress = false;
   std::string cert;  // --cert FILE: the count's certificate (certificates/FORMAT.md)
+  std::string out;   // --out DIR: count.pieces and summary.json (results/count_pieces.h)
 };
 
 // Exit status: 0 when the run finished (exact or not: the line says which), 3 when a time

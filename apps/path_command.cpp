@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "path_output.h"
+#include "piece_path_command.h"
+#include "results/count_pieces.h"
 #include "results/path_plot.h"
 #include "results/pose.h"
 #include "results/usage_error.h"
@@ -94,6 +96,12 @@ void check_out(const std::string& out) {
 }  // namespace
 
 int run_path(const PathOptions& opts) {
+  // A count directory: the path runs through its pieces instead of one CSNC.
+  if (is_count_directory(opts.result_dir)) return run_piece_path(opts);
+  if (!opts.cls.empty())
+    throw UsageError("--class needs a count directory (written by `aspects count MODEL --out "
+                     "DIR`); " + opts.result_dir + " is not one (a solve's result has CSNCs: "
+                     "use --csnc)");
   check_out(opts.out);
   LoadedResult r = load_result(opts.result_dir);
   if (const std::string note = certificate_note(r); !note.empty())

@@ -2,6 +2,7 @@
 // [--plot FILE]`: plans a certified singularity-free motion between two poses inside one
 // CSNC (planning/path_plan.h, where the certification argument is) and prints a one-line
 // summary, or the JSON object; `--out` writes the waypoints (planning/path_output.h).
+// On a count directory (`aspects count --out`) it runs piece_path_command.h instead.
 #pragma once
 
 #include <string>
@@ -14,6 +15,7 @@ struct PathOptions {
   std::string result_dir;
   std::string from, to;
   int csnc = -1;  // -1: any CSNC holding both poses
+  std::string cls;   // --class SIGNS (a count directory only), empty: any class
   bool json = false;
   std::string out;   // CSV or JSON file of the waypoints, empty: none
   std::string plot;  // PNG file, empty: none

@@ -922,7 +922,7 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   std::vector<SearchNode>().swap(solved.tree);
   solved.boxes.release();
   CountResult out = counter.run();
-  if (config.certificate) out.records = counter.records();
+  if (config.certificate || config.keep_records) out.records = counter.records();
   out.separation_bound = solved.separation.lower_bound;
   out.first_cover_boxes = first_cover_boxes;
   for (const Factor& f : solved.factors) out.factor_text.push_back(f.text + " (" + f.origin + ")");

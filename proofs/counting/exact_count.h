@@ -97,6 +97,9 @@ struct CountConfig {
   CertificateSink* certificate = nullptr;
   void (*first_cover_done)(const AspectsResult&, void* data) = nullptr;
   void* first_cover_data = nullptr;
+  // Fill CountResult::records without a certificate (`aspects count --out`: the pieces,
+  // centres and joins that `aspects path` plans through).
+  bool keep_records = false;
 };
 
 // Why a piece is not proved connected.
@@ -135,7 +138,7 @@ struct CountResult {
   long open_by_reason[5] = {0, 0, 0, 0, 0};  // open pieces (and adjacencies) by OpenReason
   std::vector<std::string> factor_text;
   double seconds = 0;
-  std::shared_ptr<CountRecords> records;  // with CountConfig::certificate
+  std::shared_ptr<CountRecords> records;  // with CountConfig::certificate or keep_records
 };
 
 // Refuses (ModelError-free std::invalid_argument) models with `factor` or `constraint`
