@@ -1,5 +1,6 @@
-# Precompiled headers for the libraries: the standard headers (and MPFI's) that nearly every
-# file of theirs includes, parsed once per library instead of once per file. The machine code
+# Precompiled headers for the libraries: the standard headers (and MPFI's, Boost's disjoint
+# sets, nlohmann-json) that most files of theirs include, parsed twice (one header for core/
+# and proofs/, one for results/, run/ and planning/) instead of once per file. The machine code
 # of core/ and proofs/ is byte for byte the same with or without them. Not for check_cert:
 # with link-time optimisation they changed the code of some of its functions (the order in
 # which the compiler meets declarations), and its speed is measured. bench/RESULTS.md,
@@ -31,5 +32,13 @@ set(_aspects_pch_headers <algorithm> <array> <cmath> <cstdint> <cstring> <functi
 function(aspects_precompile_headers target)
   if(_aspects_pch)
     target_precompile_headers(${target} PRIVATE ${_aspects_pch_headers} ${ARGN})
+  endif()
+endfunction()
+
+# aspects_reuse_precompiled_headers(TARGET FROM): TARGET uses FROM's (the same compile
+# flags): one precompiled header costs about as much as compiling three of their files.
+function(aspects_reuse_precompiled_headers target from)
+  if(_aspects_pch)
+    target_precompile_headers(${target} REUSE_FROM ${from})
   endif()
 endfunction()
