@@ -49,13 +49,17 @@ constexpr size_t kMaxOpenPlaces = 8;
 constexpr double kFaceMargin = 1e-6;  // relative to the w-part's width
 
 struct PieceRec {
+  PieceRec(uint32_t c, PieceState s, OpenReason w,
+           CountCellRecord::EmptyBy e = CountCellRecord::NotEmpty, ClassPoint p = {},
+           CountCellRecord::ConnectedBy by = CountCellRecord::NotConnected)
+      : cls(c), state(s), why(w), empty_by(e), point(std::move(p)), connected_by(by) {}
   uint32_t cls;
   PieceState state;
   OpenReason why;
   // For the certificate: why it is empty, or a point of W_s in the box (u empty: none).
-  CountCellRecord::EmptyBy empty_by = CountCellRecord::NotEmpty;
+  CountCellRecord::EmptyBy empty_by;
   ClassPoint point;
-  CountCellRecord::ConnectedBy connected_by = CountCellRecord::NotConnected;
+  CountCellRecord::ConnectedBy connected_by;
 };
 
 struct Cell {
@@ -81,6 +85,7 @@ struct Cell {
 };
 
 struct ClassEdge {
+  ClassEdge(uint32_t c) : cls(c) {}  // NOLINT: built from its class in a brace list
   uint32_t cls;
   AdjacencyState state = AdjacencyState::Undecided;
   bool tried = false;
@@ -843,23 +848,25 @@ class Counter {
       }
       out->cells.push_back(std::move(r));
     }
-    for (const Adj& e : adj_)
-      if (cells_[e.a].alive && cells_[e.b].alive)
-        for (const ClassEdge& ce : e.classes)
-          if (ce.state == AdjacencyState::Refuted) {
-            out->refuted.push_back({e.a, e.b, ce.cls});
-          } else if (ce.state == AdjacencyState::Joined) {
-            CountRecords::Joined j{e.a, e.b, ce.cls, ce.shift, ce.point.u.empty(), {}, {}, {}, {}};
-            if (!j.bridge) {
-              j.w = ce.point.w_vars;
-              j.u = ce.point.u;
-              j.hint = pairs(ce.point.w);
-            } else {
-              j.w = ce.bridge.w;
-              j.w_tilde = pairs(ce.bridge.w_tilde);
-            }
-            out->joined.push_back(std::move(j));
+    for (const Adj& e : adj_) {
+      if (!cells_[e.a].alive || !cells_[e.b].alive) continue;
+      for (const ClassEdge& ce : e.classes) {
+        if (ce.state == AdjacencyState::Refuted) {
+          out->refuted.push_back({e.a, e.b, ce.cls});
+        } else if (ce.state == AdjacencyState::Joined) {
+          CountRecords::Joined j{e.a, e.b, ce.cls, ce.shift, ce.point.u.empty(), {}, {}, {}, {}};
+          if (!j.bridge) {
+            j.w = ce.point.w_vars;
+            j.u = ce.point.u;
+            j.hint = pairs(ce.point.w);
+          } else {
+            j.w = ce.bridge.w;
+            j.w_tilde = pairs(ce.bridge.w_tilde);
           }
+          out->joined.push_back(std::move(j));
+        }
+      }
+    }
     return out;
   }
 
