@@ -16,17 +16,10 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "count_path_cli: $*" >&2; exit 1; }
 
-# expect CODE REGEX COMMAND...: exit code and a line of stdout+stderr matching REGEX.
-expect() {
-  code=$1 re=$2
-  shift 2
-  set +e
-  "$@" > "$tmp/out" 2>&1
-  got=$?
-  set -e
-  [ "$got" -eq "$code" ] || { cat "$tmp/out" >&2; fail "exit $got, expected $code: $*"; }
-  grep -E -q -e "$re" "$tmp/out" || { cat "$tmp/out" >&2; fail "no /$re/: $*"; }
-}
+# expect CODE REGEX COMMAND...: exit code and a line of stdout+stderr (in $tmp/out) matching
+# REGEX.
+expect_log=$tmp/out
+. "$(dirname "$0")/expect_output.sh"
 
 bow=$models/count_bow_tie_neck.robot
 expect 0 "^3 aspects \(certified: lower = upper\)" "$aspects" count "$bow" --out "$tmp/bow"

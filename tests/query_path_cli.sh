@@ -13,17 +13,10 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "query_path_cli: $*" >&2; exit 1; }
 
-# expect CODE REGEX COMMAND...: exit code and a line of stdout+stderr matching REGEX.
-expect() {
-  code=$1 re=$2
-  shift 2
-  set +e
-  "$@" > "$tmp/out" 2>&1
-  got=$?
-  set -e
-  [ "$got" -eq "$code" ] || { cat "$tmp/out" >&2; fail "exit $got, expected $code: $*"; }
-  grep -E -q -e "$re" "$tmp/out" || { cat "$tmp/out" >&2; fail "no /$re/: $*"; }
-}
+# expect CODE REGEX COMMAND...: exit code and a line of stdout+stderr (in $tmp/out) matching
+# REGEX.
+expect_log=$tmp/out
+. "$(dirname "$0")/expect_output.sh"
 
 mkdir "$tmp/truncated" "$tmp/version" "$tmp/garbage" "$tmp/empty"
 head -c 1000 "$result/aspects.idx" > "$tmp/truncated/aspects.idx"

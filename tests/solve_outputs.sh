@@ -68,16 +68,8 @@ for r in body:
 PY
 
 # expect CODE REGEX COMMAND...: exit code and a line of stdout+stderr matching REGEX.
-expect() {
-  code=$1 re=$2
-  shift 2
-  set +e
-  "$@" > "$out/log" 2>&1
-  got=$?
-  set -e
-  [ "$got" -eq "$code" ] || { cat "$out/log" >&2; fail "exit $got, expected $code: $*"; }
-  grep -E -q -e "$re" "$out/log" || { cat "$out/log" >&2; fail "no /$re/: $*"; }
-}
+expect_log=$out/log
+. "$(dirname "$0")/expect_output.sh"
 files() { ls -A "$1" | tr '\n' ' '; }
 
 # The hashes: summary.json's are check_cert's sha256(cert) and sha256(model), and the
