@@ -46,7 +46,18 @@ const char* count_stop_name(CountStop s) {
 namespace {
 
 constexpr size_t kMaxOpenPlaces = 8;
-constexpr double kFaceMargin = 1e-6;  // relative to the w-part's width
+constexpr double kFaceMargin = 1e-6;  // relative to the width of what it pushes out
+
+// [lo, hi] pushed out by kFaceMargin of its width at each end, not past floor and ceil (an
+// end already past them stays): a contracted end passes through the point where the graph
+// leaves the box, so a join's witness there, or a face of the star test, would otherwise
+// have to be decided to the last bit.
+Interval pushed_out(double lo, double hi, double floor, double ceil) {
+  const double margin = kFaceMargin * (hi - lo);
+  Interval x;
+  x.set_hull(std::min(lo, std::max(lo - margin, floor)), std::max(hi, std::min(hi + margin, ceil)));
+  return x;
+}
 
 struct PieceRec {
   PieceRec(uint32_t c, PieceState s, OpenReason w,
@@ -362,22 +373,19 @@ class Counter {
     for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
   }
 
-  // U grown a little at each end inside the domain, when the chart holds there too: a box
-  // contracted around its solutions ends where the graph leaves it, at an extreme of a
-  // coordinate, and the neighbour across that face begins there. A join's witness would then
-  // have to lie on both faces to the last bit; with the overlap it has room. (The cover only
-  // needs boxes holding their origin's solutions: a larger box holds them too.)
+  // U pushed out a little inside the domain, when the chart holds there too: the neighbour
+  // across a contracted face begins where the graph leaves this box; with the overlap a
+  // join's witness has room. (The cover only needs boxes holding their origin's solutions:
+  // a larger box holds them too.)
   void grow_u(Cell& c, Chart& chart) {
     Box grown = c.box;
     bool changed = false;
     for (int v : chart.u) {
-      const double lo = c.box[v].lo_down(), hi = c.box[v].hi_up();
-      const double margin = kFaceMargin * (hi - lo);
       // Within the domain; a periodic one's too: not across the seam.
-      const double glo = std::max(lo - margin, m_.vars[v].domain.lo_down());
-      const double ghi = std::min(hi + margin, m_.vars[v].domain.hi_up());
-      if (glo < lo || ghi > hi) changed = true;
-      grown[v].set_hull(std::min(glo, lo), std::max(ghi, hi));
+      grown[v] = pushed_out(c.box[v].lo_down(), c.box[v].hi_up(), m_.vars[v].domain.lo_down(),
+                            m_.vars[v].domain.hi_up());
+      changed = changed || grown[v].lo_down() < c.box[v].lo_down() ||
+                grown[v].hi_up() > c.box[v].hi_up();
     }
     if (!changed) return;
     Chart wider;
@@ -501,19 +509,15 @@ class Counter {
       const double hi = std::min(c.box[v].hi_up(), chart.w_range[j].hi_up());
       if (!(lo <= hi)) return false;  // no solution in the box
       if (!c.solution) {
-        // An end the box sets (not the range) is pushed out a little: a contracted end
-        // passes through the point where the graph leaves the box, tangentially at an
-        // extreme of w, so a join's witness there or a face of the star test would have to
-        // be decided to the last bit.
-        const double margin = kFaceMargin * (hi - lo);
-        double glo = lo, ghi = hi;
-        if (lo > chart.w_range[j].lo_down()) glo = std::max(chart.w_range[j].lo_down(), lo - margin);
-        if (hi < chart.w_range[j].hi_up()) ghi = std::min(chart.w_range[j].hi_up(), hi + margin);
+        // An end the box sets (not the range) is pushed out, within the range (and the
+        // domain on a non-periodic w).
+        double floor = lo > chart.w_range[j].lo_down() ? chart.w_range[j].lo_down() : lo;
+        double ceil = hi < chart.w_range[j].hi_up() ? chart.w_range[j].hi_up() : hi;
         if (!periodic_[v]) {
-          glo = std::max(glo, m_.vars[v].domain.lo_down());
-          ghi = std::min(ghi, m_.vars[v].domain.hi_up());
+          floor = std::max(floor, m_.vars[v].domain.lo_down());
+          ceil = std::min(ceil, m_.vars[v].domain.hi_up());
         }
-        c.box[v].set_hull(std::min(glo, lo), std::max(ghi, hi));
+        c.box[v] = pushed_out(lo, hi, floor, ceil);
       }
       if (chart.w_range[j].lo_down() < c.box[v].lo_down()) {
         faces.push_back({StarConstraint::WLower, j, 1, c.box[v].lo_down()});
