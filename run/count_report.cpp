@@ -20,7 +20,47 @@ std::string box_text(const OpenPlace& o, const Model& m) {
   return out.str();
 }
 
+// A factor's text ends with its origin in parentheses, "(det Fx)". A long expression (3-RRR*'s
+// det Fx has over 1,000 characters) would bury the report, so only its origin is printed;
+// `--json` keeps the whole text.
+std::string factor_label(const std::string& f) {
+  constexpr size_t kLongest = 80;
+  const size_t open = f.rfind(" (");
+  if (f.size() <= kLongest || open == std::string::npos) return f;
+  return f.substr(open + 2, f.size() - open - 3) + " [" + std::to_string(open) +
+         " characters; --json gives it]";
+}
+
+// Where a region lies: the hull of its boxes' pose parts.
+std::string pose_hull_text(const CountRegion& r, const Model& m) {
+  std::ostringstream out;
+  out.precision(4);
+  for (size_t i = 0; i < m.pose.size(); ++i) {
+    const int v = m.pose[i];
+    out << (i ? ", " : "") << m.vars[v].name << " in [" << r.lo[v] << ", " << r.hi[v] << "]";
+  }
+  return out.str();
+}
+
 std::string aspects_text(int k) { return std::to_string(k) + (k == 1 ? " aspect" : " aspects"); }
+
+// The lower bound's regions, largest first: each is one aspect when the count is exact, and
+// holds at least one otherwise.
+void print_regions(std::ostream& out, const Model& m, const CountResult& r) {
+  constexpr size_t kShown = 30;
+  if (r.regions.empty()) return;
+  const int p = int(r.factor_text.size());
+  out << (r.bounds.exact() ? "the aspects" : "the regions of the lower bound (each holds at least one aspect)")
+      << ", largest first: class, boxes holding it, the hull and the volume of their poses\n";
+  for (size_t i = 0; i < r.regions.size() && i < kShown; ++i) {
+    const CountRegion& x = r.regions[i];
+    out << "  " << i + 1 << ". " << class_text(x.cls, p) << "  " << x.boxes
+        << (x.boxes == 1 ? " box" : " boxes") << "  " << pose_hull_text(x, m) << "  volume "
+        << x.pose_volume << '\n';
+  }
+  if (r.regions.size() > kShown)
+    out << "  ... and " << r.regions.size() - kShown << " more (--json lists them all)\n";
+}
 
 }  // namespace
 
@@ -61,6 +101,12 @@ nlohmann::json count_json(const Model& m, const CountResult& r, double eps) {
     open.push_back({{"reason", open_reason_name(pl.reason)}, {"class", class_text(pl.cls, p)},
                     {"lo", pl.lo}, {"hi", pl.hi}});
   j["open"] = open;
+  nlohmann::json regions = nlohmann::json::array();
+  for (const CountRegion& x : r.regions)
+    regions.push_back({{"class", class_text(x.cls, p)}, {"boxes", x.boxes},
+                       {"connected_pieces", x.connected}, {"lo", x.lo}, {"hi", x.hi},
+                       {"pose_volume", x.pose_volume}});
+  j["regions"] = regions;
   return j;
 }
 
@@ -73,8 +119,9 @@ void print_count_details(std::ostream& out, const Model& m, const CountResult& r
   out << "boxes: " << r.cells << ", pieces: " << r.pieces << ", adjacencies: " << r.adjacencies
       << ", rounds: " << r.rounds << ", " << r.seconds << " s\n";
   out << "sign classes over:";
-  for (const std::string& f : r.factor_text) out << "  " << f;
+  for (const std::string& f : r.factor_text) out << "  " << factor_label(f);
   out << '\n';
+  print_regions(out, m, r);
   if (b.exact()) return;
   out << "the gap is held by " << b.open_pieces << " piece(s) not proved connected ("
       << r.open_by_reason[int(OpenReason::NoChart)] << " with no chart, "

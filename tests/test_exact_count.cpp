@@ -66,6 +66,19 @@ TEST(ExactCount, AnAspectThinnerThanEpsilon) {
       0.5);
   EXPECT_EQ(r.bounds.lower, 3);
   EXPECT_EQ(r.bounds.upper, 3);
+  // One region per aspect, largest first: the thin one (det Fx > 0, class bit 0 set) is the
+  // last, and its boxes' hull holds [0.3, 0.31] and lies within the domain's (0.29, 0.32).
+  ASSERT_EQ(r.regions.size(), 3u);
+  const CountRegion& thin = r.regions.back();
+  EXPECT_EQ(thin.cls & 1u, 1u);
+  EXPECT_EQ(r.regions[0].cls & 1u, 0u);
+  EXPECT_EQ(r.regions[1].cls & 1u, 0u);
+  EXPECT_LE(thin.lo[0], 0.3);
+  EXPECT_GE(thin.hi[0], 0.31);
+  EXPECT_GT(thin.lo[0], 0.29);
+  EXPECT_LT(thin.hi[0], 0.32);
+  EXPECT_LT(thin.pose_volume, 0.03);
+  EXPECT_GT(r.regions[1].pose_volume, 0.5);
 }
 
 // One aspect whose graph turns back on itself in q: no pose chart near its turning points

@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <memory>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -639,10 +640,52 @@ class Counter {
     decide_between_components(g, edges);
     const CountBounds b = g.bounds();
     out.bounds = b;
+    out.regions = regions(g);
     out.pieces = g.pieces();
     out.adjacencies = g.adjacencies();
     mark_open(g, edges, refine, out);
     return b;
+  }
+
+  // The lower bound's components with where they lie; build_round_graph numbers the pieces
+  // cell by cell, in the cells' order.
+  std::vector<CountRegion> regions(const CountGraph& g) const {
+    const std::vector<int32_t> gc = g.unrefuted_components();
+    std::vector<CountRegion> rs;
+    std::vector<uint8_t> nonempty;
+    int32_t node = 0;
+    for (const Cell& c : cells_) {
+      if (!c.alive) continue;
+      for (const PieceRec& r : c.pieces) {
+        const int32_t k = gc[node++];
+        if (k < 0 || r.state == PieceState::Empty) continue;
+        if (size_t(k) >= rs.size()) rs.resize(k + 1), nonempty.resize(k + 1, 0);
+        CountRegion& x = rs[k];
+        if (x.boxes == 0) {
+          x.lo.assign(nv_, std::numeric_limits<double>::infinity());
+          x.hi.assign(nv_, -std::numeric_limits<double>::infinity());
+        }
+        double volume = 1;
+        for (int v = 0; v < nv_; ++v) {
+          const double lo = c.box[v].lo_down(), hi = c.box[v].hi_up();
+          x.lo[v] = std::min(x.lo[v], lo);
+          x.hi[v] = std::max(x.hi[v], hi);
+          if (m_.vars[v].kind == VarKind::Pose) volume *= hi - lo;
+        }
+        x.cls = r.cls;
+        ++x.boxes;
+        x.connected += r.state == PieceState::Connected;
+        x.pose_volume += volume;
+        nonempty[k] |= r.state == PieceState::Connected || r.state == PieceState::Nonempty;
+      }
+    }
+    std::vector<CountRegion> out;
+    for (size_t k = 0; k < rs.size(); ++k)
+      if (nonempty[k]) out.push_back(std::move(rs[k]));
+    std::stable_sort(out.begin(), out.end(), [](const CountRegion& a, const CountRegion& b) {
+      return a.pose_volume > b.pose_volume;
+    });
+    return out;
   }
 
   // The graph of this round: one node per piece of a live cell, an edge per class of an

@@ -127,6 +127,17 @@ enum class CountStop : uint8_t {
 };
 const char* count_stop_name(CountStop s);
 
+// A component of G (every adjacency not refuted) that holds a piece proved nonempty: each
+// holds at least one aspect of its own, exactly one when the count is exact. Its pieces'
+// boxes give where it lies (the hull of their pose parts) and an outer measure of its size.
+struct CountRegion {
+  uint32_t cls = 0;             // its sign class (bit i: factor i positive)
+  long boxes = 0;               // boxes holding one of its pieces (not empty)
+  long connected = 0;           // of which, pieces proved connected
+  std::vector<double> lo, hi;   // hull of those boxes (model order)
+  double pose_volume = 0;       // sum of their pose parts' volumes (≥ the region's)
+};
+
 struct CountResult {
   CountBounds bounds;
   CountStop stop = CountStop::Exact;
@@ -137,6 +148,7 @@ struct CountResult {
   std::vector<OpenPlace> open;  // at most a few, the first found
   long open_by_reason[5] = {0, 0, 0, 0, 0};  // open pieces (and adjacencies) by OpenReason
   std::vector<std::string> factor_text;
+  std::vector<CountRegion> regions;  // the lower bound's components, largest first
   double seconds = 0;
   std::shared_ptr<CountRecords> records;  // with CountConfig::certificate or keep_records
 };
