@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -11,11 +10,9 @@
 
 #include "count_certificate.h"
 #include "counting/exact_count.h"
-#include "io/atomic_file.h"
 #include "model/model.h"
-#include "results/count_pieces.h"
-#include "results/result_index.h"
 #include "results/usage_error.h"
+#include "run/count_dir.h"
 #include "run/count_report.h"
 #include "search/stop_condition.h"
 
@@ -32,32 +29,6 @@ void progress_line(int round, const CountBounds& b, long cells, const long* why,
                why[int(OpenReason::NotStar)], b.open_adjacencies);
 }
 
-// --out DIR, checked before any work: made if missing; never a solve's result directory
-// (`aspects path` would no longer know which it is).
-void prepare_out(const std::string& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (dir.find('\0') != std::string::npos)
-    throw UsageError("--out: the path contains a NUL character");
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw UsageError("--out: '" + dir + "' exists and is not a directory");
-  if (fs::exists(fs::path(dir) / kResultIndexName, ec))
-    throw UsageError("--out: '" + dir + "' holds a solve's result (" + kResultIndexName +
-                     "): give a directory of its own to the count");
-  fs::create_directories(dir, ec);
-  if (ec) throw UsageError("--out: cannot make the directory '" + dir + "': " + ec.message());
-}
-
-// DIR/count.pieces and DIR/summary.json (count --json's object), each written under a
-// temporary name and renamed.
-void write_count_dir(const std::string& dir, const Model& m, const CountResult& r, double eps) {
-  namespace fs = std::filesystem;
-  write_count_pieces((fs::path(dir) / kCountPiecesName).string(),
-                     count_pieces_of(m, r, eps, working_precision()));
-  write_file_atomically((fs::path(dir) / "summary.json").string(),
-                        count_json(m, r, eps).dump(1) + "\n");
-}
-
 }  // namespace
 
 int run_count(const CountOptions& o) {
@@ -66,7 +37,7 @@ int run_count(const CountOptions& o) {
   if (o.time_limit < 0) throw UsageError("--time-limit must be >= 0");
   Model m = o.model_path.empty() ? parse_model(kDefaultModelText, "(embedded RRRRR)")
                                  : load_model(o.model_path);
-  if (!o.out.empty()) prepare_out(o.out);
+  if (!o.out.empty()) prepare_count_dir(o.out, "--out");
   StopCondition stop;
   if (o.time_limit > 0) stop.set_time_limit(o.time_limit);
   stop.set_watch_signals(true);

@@ -1,180 +1,14 @@
 #include "piece_path_command.h"
 
-#include <cmath>
-#include <cstdio>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "counting/factor_gradients.h"
 #include "piece_path.h"
+#include "piece_path_output.h"
 #include "results/pose.h"
 #include "results/usage_error.h"
 
 namespace aspects {
-
-namespace {
-
-std::string classes_text(const std::vector<uint32_t>& cs, int p) {
-  std::string s;
-  for (uint32_t c : cs) s += (s.empty() ? "" : ", ") + class_signs(c, p);
-  return s.empty() ? "none" : s;
-}
-
-std::string bounds_text(const CountPieces& P) {
-  if (P.exact()) return std::to_string(P.lower) + " aspects, exact";
-  if (P.upper < 0) return "at least " + std::to_string(P.lower) + " aspects, no upper bound";
-  return "between " + std::to_string(P.lower) + " and " + std::to_string(P.upper) + " aspects";
-}
-
-// --class: one sign a factor, + or -, in the factors' order.
-int64_t parse_class(const std::string& text, int p) {
-  if (text.empty()) return -1;
-  uint32_t c = 0;
-  bool ok = int(text.size()) == p;
-  for (int i = 0; ok && i < p; ++i) {
-    if (text[i] == '+') c |= uint32_t(1) << i;
-    else if (text[i] != '-') ok = false;
-  }
-  if (!ok)
-    throw UsageError("--class must be " + std::to_string(p) +
-                     " signs, each + or - (one per determinant factor, as `aspects count` lists "
-                     "them), got '" + text + "'");
-  return c;
-}
-
-const char* outcome_name(PiecePathOutcome o) {
-  switch (o) {
-    case PiecePathOutcome::Found: return "found";
-    case PiecePathOutcome::StartNowhere: return "start_nowhere";
-    case PiecePathOutcome::GoalNowhere: return "goal_nowhere";
-    case PiecePathOutcome::ClassAbsent: return "class_absent";
-    case PiecePathOutcome::DifferentClasses: return "different_classes";
-    case PiecePathOutcome::DifferentAspects: return "different_aspects";
-    case PiecePathOutcome::NotJoined: return "not_joined";
-    case PiecePathOutcome::ProofFailed: return "proof_failed";
-  }
-  return "?";
-}
-
-const char* kind_name(PieceWaypoint::Kind k) {
-  switch (k) {
-    case PieceWaypoint::Start: return "start";
-    case PieceWaypoint::Centre: return "centre";
-    case PieceWaypoint::Join: return "join";
-    case PieceWaypoint::Point: return "point";
-    case PieceWaypoint::Goal: return "goal";
-  }
-  return "?";
-}
-
-// A waypoint in the path's unwrapped coordinates: the middle of its enclosure + 2π·turns
-// (in doubles: numerical; the enclosure is what is proved).
-std::vector<double> unwrapped(const PieceWaypoint& w) {
-  std::vector<double> x(w.lo.size());
-  for (size_t v = 0; v < x.size(); ++v) x[v] = 0.5 * (w.lo[v] + w.hi[v]) + 2 * M_PI * w.turns[v];
-  return x;
-}
-
-nlohmann::json to_json(const CountDirectory& d, const std::vector<double>& from,
-                       const std::vector<double>& to, const PiecePathResult& r) {
-  const int p = int(d.pieces.factors.size());
-  const Model& m = d.model;
-  nlohmann::json j;
-  j["count_dir"] = d.directory;
-  j["outcome"] = outcome_name(r.outcome);
-  j["from"] = from;
-  j["to"] = to;
-  auto signs = [&](const std::vector<uint32_t>& cs) {
-    nlohmann::json a = nlohmann::json::array();
-    for (uint32_t c : cs) a.push_back(class_signs(c, p));
-    return a;
-  };
-  j["start_classes"] = signs(r.start_classes);
-  j["goal_classes"] = signs(r.goal_classes);
-  j["variables"] = nlohmann::json::array();
-  for (const auto& v : m.vars) j["variables"].push_back(v.name);
-  if (r.outcome != PiecePathOutcome::Found) {
-    if (!r.failure.empty()) j["failure"] = r.failure;
-    return j;
-  }
-  j["class"] = class_signs(r.cls, p);
-  j["other_classes"] = signs(r.other_classes);
-  j["pieces"] = r.pieces;
-  j["point_joins"] = r.point_joins;
-  j["bridges"] = r.bridges;
-  j["waypoints"] = nlohmann::json::array();
-  for (const PieceWaypoint& w : r.waypoints)
-    j["waypoints"].push_back({{"kind", kind_name(w.kind)}, {"box", w.cell},
-                              {"config", unwrapped(w)}, {"lo", w.lo}, {"hi", w.hi},
-                              {"turns", w.turns}});
-  j["segments"] = nlohmann::json::array();
-  for (const PieceSegment& s : r.segments) {
-    nlohmann::json u = nlohmann::json::array();
-    for (int v : s.u) u.push_back(m.vars[v].name);
-    j["segments"].push_back(
-        {{"how", s.how == PieceSegment::Star ? "star" : s.how == PieceSegment::Graph ? "graph"
-                                                                                     : "bridge"},
-         {"box", s.cell}, {"straight_in", u}});
-  }
-  return j;
-}
-
-void print_text(const CountDirectory& d, const std::vector<double>& from,
-                const std::vector<double>& to, const PiecePathResult& r) {
-  const int p = int(d.pieces.factors.size());
-  const CountPieces& P = d.pieces;
-  std::printf("robot %s  count %s (%s)  from %s  to %s\n", d.model.name.c_str(),
-              d.directory.c_str(), bounds_text(P).c_str(), format_pose(from).c_str(),
-              format_pose(to).c_str());
-  const std::string where = "the start's configurations found are of class " +
-                            classes_text(r.start_classes, p) + ", the goal's of class " +
-                            classes_text(r.goal_classes, p);
-  switch (r.outcome) {
-    case PiecePathOutcome::Found: {
-      std::printf("certified singularity-free path through %d pieces of class %s (one aspect): "
-                  "%zu waypoints, %zu segments (%d join points, %d bridges); each segment is "
-                  "straight in the u-coordinates of its box's chart, not in pose space\n",
-                  r.pieces, class_signs(r.cls, p).c_str(), r.waypoints.size(),
-                  r.segments.size(), r.point_joins, r.bridges);
-      if (!r.other_classes.empty())
-        std::printf("other classes holding both poses (other working modes): %s (use --class)\n",
-                    classes_text(r.other_classes, p).c_str());
-      break;
-    }
-    case PiecePathOutcome::StartNowhere:
-      std::printf("no path: no configuration of the start pose was proved in a piece the count "
-                  "proved connected (%ld of its boxes with such pieces hold the pose)\n",
-                  r.start_cells);
-      break;
-    case PiecePathOutcome::GoalNowhere:
-      std::printf("no path: no configuration of the goal pose was proved in a piece the count "
-                  "proved connected (%ld of its boxes with such pieces hold the pose)\n",
-                  r.goal_cells);
-      break;
-    case PiecePathOutcome::ClassAbsent:
-      std::printf("no path in the class asked for: %s\n", where.c_str());
-      break;
-    case PiecePathOutcome::DifferentClasses:
-      std::printf("refused: %s; configurations of different classes lie in different aspects, "
-                  "so no singularity-free path joins them\n", where.c_str());
-      break;
-    case PiecePathOutcome::DifferentAspects:
-      std::printf("refused: the configurations found lie in different aspects: %s, and the "
-                  "count is exact, so the components of its joined pieces are the aspects, and "
-                  "none holds a configuration of both poses in one class\n", where.c_str());
-      break;
-    case PiecePathOutcome::NotJoined:
-      std::printf("no certified path: no component of the count's joined pieces holds a "
-                  "configuration of both poses in one class (%s); the count is not exact, so "
-                  "they may still lie in one aspect\n", where.c_str());
-      break;
-    case PiecePathOutcome::ProofFailed:
-      std::printf("no certified path: %s\n", r.failure.c_str());
-      break;
-  }
-}
-
-}  // namespace
 
 int run_piece_path(const PathOptions& opts) {
   if (opts.csnc >= 0)
@@ -184,7 +18,7 @@ int run_piece_path(const PathOptions& opts) {
     throw UsageError(std::string(opts.out.empty() ? "--plot" : "--out") +
                      ": not available for a path through a count's pieces (use --json)");
   CountDirectory d = load_count_directory(opts.result_dir);
-  const int64_t cls = parse_class(opts.cls, int(d.pieces.factors.size()));
+  const int64_t cls = parse_class_signs(opts.cls, int(d.pieces.factors.size()));
   const std::vector<double> from = parse_pose(opts.from, "--from", d.model);
   const std::vector<double> to = parse_pose(opts.to, "--to", d.model);
   // The gradients' nodes are added to the model before its evaluator exists.
@@ -192,9 +26,9 @@ int run_piece_path(const PathOptions& opts) {
   ModelEvaluator ev(d.model);
   const PiecePathResult r = plan_piece_path(d, ev, fg, from, to, cls);
   if (opts.json)
-    std::cout << to_json(d, from, to, r).dump() << '\n';
+    std::cout << piece_path_json(d, from, to, r).dump() << '\n';
   else
-    print_text(d, from, to, r);
+    std::cout << piece_path_text(d, from, to, r);
   return r.outcome == PiecePathOutcome::Found ? 0 : 1;
 }
 

@@ -25,8 +25,15 @@ std::string box_text(const OpenPlace& o, const Model& m) {
 // `--json` keeps the whole text.
 std::string factor_label(const std::string& f) {
   constexpr size_t kLongest = 80;
-  const size_t open = f.rfind(" (");
-  if (f.size() <= kLongest || open == std::string::npos) return f;
+  if (f.size() <= kLongest || f.empty() || f.back() != ')') return f;
+  // The origin's own parentheses ("diagonal Fq, entry (1,1)"): match the last ')'.
+  size_t open = f.size() - 1;
+  for (int depth = 0; open-- > 0;) {
+    if (f[open] == ')') ++depth;
+    if (f[open] == '(' && depth-- == 0) break;
+  }
+  if (open == std::string::npos || open == 0 || f[open - 1] != ' ') return f;
+  --open;  // at the space before it
   return f.substr(open + 2, f.size() - open - 3) + " [" + std::to_string(open) +
          " characters; --json gives it]";
 }

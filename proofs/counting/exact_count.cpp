@@ -670,7 +670,9 @@ class Counter {
           const double lo = c.box[v].lo_down(), hi = c.box[v].hi_up();
           x.lo[v] = std::min(x.lo[v], lo);
           x.hi[v] = std::max(x.hi[v], hi);
-          if (m_.vars[v].kind == VarKind::Pose) volume *= hi - lo;
+          // A pose fixed by its domain (3-RRR*'s x3 in [0, 0]) takes no part in the volume.
+          if (m_.vars[v].kind == VarKind::Pose && m_.vars[v].domain.width_up() > 0)
+            volume *= hi - lo;
         }
         x.cls = r.cls;
         ++x.boxes;
