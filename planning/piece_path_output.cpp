@@ -21,6 +21,11 @@ std::string text_of(const char* format, Args... args) {
   return s;
 }
 
+// "1 piece", "2 pieces".
+std::string counted(long n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 std::string classes_text(const std::vector<uint32_t>& cs, int p) {
   std::string s;
   for (uint32_t c : cs) s += (s.empty() ? "" : ", ") + class_signs(c, p);
@@ -161,12 +166,13 @@ std::string piece_path_text(const CountDirectory& d, const std::vector<double>& 
                             classes_text(r.goal_classes, p);
   switch (r.outcome) {
     case PiecePathOutcome::Found: {
-      out += text_of(
-          "certified singularity-free path through %d pieces of class %s (one aspect): "
-          "%zu waypoints, %zu segments (%d join points, %d bridges); each segment is "
-          "straight in the u-coordinates of its box's chart, not in pose space\n",
-          r.pieces, class_signs(r.cls, p).c_str(), r.waypoints.size(), r.segments.size(),
-          r.point_joins, r.bridges);
+      out += "certified singularity-free path through " + counted(r.pieces, "piece") +
+             " of class " + class_signs(r.cls, p) + " (one aspect): " +
+             counted(long(r.waypoints.size()), "waypoint") + ", " +
+             counted(long(r.segments.size()), "segment") + " (" +
+             counted(r.point_joins, "join point") + ", " + counted(r.bridges, "bridge") +
+             "); each segment is straight in the u-coordinates of its box's chart, not in "
+             "pose space\n";
       if (!r.other_classes.empty())
         out += text_of("other classes holding both poses (other working modes): %s (use --class)\n",
                        classes_text(r.other_classes, p).c_str());

@@ -159,4 +159,17 @@ std::string format_pose(const std::vector<double>& pose) {
   return "(" + s + ")";
 }
 
+std::vector<double> checked_pose(const std::vector<double>& pose, const std::string& what,
+                                 const Model& model) {
+  if (pose.empty())
+    throw UsageError(what + ": give " + std::to_string(model.pose.size()) + " numbers");
+  std::string text;
+  for (double x : pose) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    text += (text.empty() ? "" : ",") + std::string(buf);
+  }
+  return parse_pose(text, what, model);
+}
+
 }  // namespace aspects

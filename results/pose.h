@@ -21,6 +21,12 @@ namespace aspects {
 std::vector<double> parse_pose(const std::string& text, const std::string& option,
                                const Model& model);
 
+// A pose given as numbers (a front end's list), checked as parse_pose checks text: each
+// printed with 17 digits, which parse back to the same double. Throws UsageError naming
+// `what`; an empty list is refused too.
+std::vector<double> checked_pose(const std::vector<double>& pose, const std::string& what,
+                                 const Model& model);
+
 // Keeps the number of turns k small (an int).
 constexpr double kMaxPeriodicCoordinate = 1e6;
 

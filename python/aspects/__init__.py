@@ -20,13 +20,14 @@ from ._aspects import (  # noqa: F401
 from . import _aspects
 from .progress import progress_callback as _progress_callback
 from .answers import (  # noqa: F401
-    Command, CountResult, OpenPlace, PathResult, QueryBatch, QueryResult, Waypoint,
+    Command, CountRegion, CountResult, OpenPlace, PathResult, PiecePathResult, QueryBatch,
+    QueryResult, Waypoint,
 )
-from .result import Result
+from .result import Result, _pose as _pose_list
 
 __all__ = ["Model", "ModelError", "ResultError", "Result", "Interrupted", "solve", "load",
-           "count", "CountResult", "OpenPlace", "QueryResult", "QueryBatch", "Command",
-           "PathResult", "Waypoint", "__version__"]
+           "count", "piece_path", "CountResult", "CountRegion", "OpenPlace", "QueryResult",
+           "QueryBatch", "Command", "PathResult", "PiecePathResult", "Waypoint", "__version__"]
 
 
 class Interrupted(KeyboardInterrupt):
@@ -133,7 +134,8 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     return result
 
 
-def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-4, rounds=200):
+def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-4, rounds=200,
+          out=None):
     """The certified number of aspects of `model`, as `aspects count` computes it; returns a
     CountResult (its .count is the number when lower = upper is certified, else None, and
     .lower/.upper the certified bounds). `model`: an aspects.Model or a .robot path.
@@ -143,6 +145,10 @@ def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-4, rounds=
     budget. time_limit (seconds) and Ctrl-C stop the refinement: the bounds reached are
     returned (they hold; .interrupted says Ctrl-C). ValueError for a model the count
     refuses (`factor` or `constraint` statements).
+
+    out: a directory, made if missing, where the count writes count.pieces and
+    summary.json as `aspects count --out` does, for aspects.piece_path (ValueError for a
+    file, or a solve's result directory).
     """
     model = _model_of(model)
     eps = _eps(eps)
@@ -154,9 +160,25 @@ def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-4, rounds=
         raise ValueError(f"rounds must be between 1 and 1000000, got {rounds}")
     threads = _threads(threads)
     time_limit = _time_limit(time_limit)
+    out = "" if out is None else _os.fspath(out)
     data, line, interrupted = _aspects._count(model, eps, min_width, rounds, time_limit,
-                                              threads)
+                                              threads, out)
     return CountResult.from_dict(data, line, interrupted)
+
+
+def piece_path(directory, start, goal, cls=None):
+    """A certified singularity-free path through the pieces of a count, between two poses
+    of one aspect whatever CSNCs they lie in, as `aspects path DIRECTORY --from START --to
+    GOAL [--class CLS]` plans it (docs/path.md, "Through the pieces of a count"); returns a
+    PiecePathResult. `directory`: what count(out=...) or `aspects count --out` wrote. `cls`:
+    the sign class to stay in ('+-', one sign per factor), or None for any. ValueError for
+    a bad pose or class, ResultError for a directory that is not a count's."""
+    directory = _os.fspath(directory)
+    if cls is not None and not isinstance(cls, str):
+        raise TypeError("cls must be a string of signs, such as '+-', or None")
+    data, line = _aspects._piece_path(directory, _pose_list(start, "start"),
+                                      _pose_list(goal, "goal"), cls or "")
+    return PiecePathResult.from_dict(data, line)
 
 
 def load(directory):

@@ -193,31 +193,90 @@ class OpenPlace(_FromJson):
 
 
 @dataclass(frozen=True)
+class CountRegion(_FromJson):
+    """A region of a count's lower bound (a component of its pieces that no refutation
+    splits, holding a piece proved nonempty): one aspect when the count is exact, at least
+    one otherwise. Its sign `cls`, the `boxes` holding its pieces (`connected_pieces` of them
+    proved connected), their hull [lo, hi] (model order) and `pose_volume`, the total
+    volume of their pose parts (a pose fixed by its domain left out): where it lies and an
+    upper bound on its size."""
+    cls: str
+    boxes: int
+    connected_pieces: int
+    lo: Tuple[float, ...]
+    hi: Tuple[float, ...]
+    pose_volume: float
+    _data: dict = field(repr=False, compare=False)
+
+    @classmethod
+    def from_dict(cls, d):
+        return cls(d["class"], d["boxes"], d["connected_pieces"], tuple(d["lo"]),
+                   tuple(d["hi"]), d["pose_volume"], d)
+
+
+@dataclass(frozen=True)
 class CountResult(_FromJson):
     """The certified count of aspects.count: `lower` and `upper` bounds (upper None when a
     piece is not proved connected), `exact` when they meet (then `count` is the number),
     `line` the sentence `aspects count` prints first, `stop` why the refinement ended,
-    `open` the first places that hold the gap, and `interrupted` when Ctrl-C stopped it
-    (the bounds still hold). .to_dict() is `aspects count --json`'s object."""
+    `open` the first places that hold the gap, `regions` the lower bound's regions
+    (CountRegion, largest first: the aspects when the count is exact), and `interrupted`
+    when Ctrl-C stopped it (the bounds still hold). .to_dict() is `aspects count --json`'s
+    object."""
     lower: int
     upper: Optional[int]
     exact: bool
     line: str
     stop: str
     open: Tuple[OpenPlace, ...]
+    regions: Tuple[CountRegion, ...]
     interrupted: bool
     _data: dict = field(repr=False, compare=False)
 
     @classmethod
     def from_dict(cls, d, line, interrupted=False):
         return cls(d["lower_bound"], d["upper_bound"], d["exact"], line, d["stop"],
-                   tuple(OpenPlace.from_dict(o) for o in d.get("open", ())), bool(interrupted),
-                   d)
+                   tuple(OpenPlace.from_dict(o) for o in d.get("open", ())),
+                   tuple(CountRegion.from_dict(r) for r in d.get("regions", ())),
+                   bool(interrupted), d)
 
     @property
     def count(self):
         """The number of aspects when it is certified exactly (lower = upper), else None."""
         return self.lower if self.exact else None
+
+    def __str__(self):
+        return self.line
+
+
+@dataclass(frozen=True)
+class PiecePathResult(_FromJson):
+    """A certified singularity-free path through the pieces of a count (aspects.piece_path),
+    or why there is none: `outcome` (found, or the reason), `line` what `aspects path DIR`
+    prints, `cls` the sign class it stays in (None when not found), `start_classes` and
+    `goal_classes` the classes of the configurations proved for each pose, `pieces` crossed,
+    and `waypoints` (dicts: kind start/centre/join/point/goal, box, config, lo, hi, turns).
+    Each segment is straight in the u-coordinates of its box's chart (`segments`), not in
+    pose space. .to_dict() is `aspects path DIR --json`'s object."""
+    outcome: str
+    line: str
+    cls: Optional[str]
+    start_classes: Tuple[str, ...]
+    goal_classes: Tuple[str, ...]
+    pieces: int
+    waypoints: Tuple[dict, ...]
+    segments: Tuple[dict, ...]
+    _data: dict = field(repr=False, compare=False)
+
+    @classmethod
+    def from_dict(cls, d, line):
+        return cls(d["outcome"], line, d.get("class"), tuple(d.get("start_classes", ())),
+                   tuple(d.get("goal_classes", ())), d.get("pieces", 0),
+                   tuple(d.get("waypoints", ())), tuple(d.get("segments", ())), d)
+
+    @property
+    def found(self):
+        return self.outcome == "found"
 
     def __str__(self):
         return self.line

@@ -1,13 +1,24 @@
 // aspects.count: the certified number of aspects, or bounds on it (proofs/counting/), as
-// `aspects count --json` reports it (run/count_report.h).
+// `aspects count --json` reports it (run/count_report.h), and its directory (out=); and
+// aspects.piece_path, a certified path through the pieces of such a directory
+// (planning/piece_path.h), as `aspects path DIR --json` reports it.
+#include <pybind11/stl.h>
+
+#include <cstdio>
 #include <stdexcept>
 #include <thread>
 
 #include "counting/exact_count.h"
+#include "counting/factor_gradients.h"
 #include "model/model.h"
+#include "piece_path.h"
+#include "piece_path_output.h"
 #include "py_common.h"
 #include "py_model.h"
 #include "py_polling.h"
+#include "results/pose.h"
+#include "results/usage_error.h"
+#include "run/count_dir.h"
 #include "run/count_report.h"
 #include "search/stop_condition.h"
 
@@ -22,8 +33,10 @@ const InterruptNotes kCountInterrupts = {
 
 // The count on a worker thread (py_polling.h): Ctrl-C stops the refinement, and the bounds
 // reached (which hold) are returned, as on the command line.
-pyb::tuple count(const PyModel& pm, const CountConfig& given, double time_limit) {
+pyb::tuple count(const PyModel& pm, const CountConfig& given, double time_limit,
+                 const std::string& out) {
   Model m = parse_model(pm.source, pm.file);
+  if (!out.empty()) prepare_count_dir(out, "out");
   StopCondition stop;
   if (time_limit > 0) stop.set_time_limit(time_limit);
   CountConfig cfg = given;
@@ -37,8 +50,23 @@ pyb::tuple count(const PyModel& pm, const CountConfig& given, double time_limit)
   } catch (const std::invalid_argument& e) {  // a refused model: named as the CLI names it
     throw std::invalid_argument(m.file + ": " + e.what());
   }
+  if (!out.empty()) write_count_dir(out, m, r, cfg.eps);
   return pyb::make_tuple(to_python(count_json(m, r, cfg.eps)),
                          pyb::str(count_line(r.bounds)), interrupted);
+}
+
+pyb::tuple piece_path(const std::string& dir, const std::vector<double>& a,
+                      const std::vector<double>& b, const std::string& cls) {
+  CountDirectory d = load_count_directory(dir);
+  const int64_t c = parse_class_signs(cls, int(d.pieces.factors.size()));
+  const std::vector<double> from = checked_pose(a, "start", d.model);
+  const std::vector<double> to = checked_pose(b, "goal", d.model);
+  // The gradients' nodes are added to the model before its evaluator exists.
+  FactorGradients fg(d.model, d.factor_nodes);
+  ModelEvaluator ev(d.model);
+  const PiecePathResult r = plan_piece_path(d, ev, fg, from, to, c);
+  return pyb::make_tuple(to_python(piece_path_json(d, from, to, r)),
+                         pyb::str(piece_path_text(d, from, to, r)));
 }
 
 }  // namespace
@@ -47,17 +75,22 @@ void bind_count(pyb::module_& m) {
   m.def(
       "_count",
       [](const PyModel& model, double eps, double min_width, int rounds, double time_limit,
-         int threads) {
+         int threads, const std::string& out) {
         CountConfig cfg;
         cfg.eps = eps;
         cfg.min_width = min_width;
         cfg.max_rounds = rounds;
         cfg.threads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-        return count(model, cfg, time_limit);
+        cfg.keep_records = !out.empty();
+        return count(model, cfg, time_limit, out);
       },
       pyb::arg("model"), pyb::arg("eps"), pyb::arg("min_width"), pyb::arg("rounds"),
-      pyb::arg("time_limit"), pyb::arg("threads"),
+      pyb::arg("time_limit"), pyb::arg("threads"), pyb::arg("out"),
       "Count; returns (count --json's object, the count line, interrupted). Use aspects.count.");
+  m.def("_piece_path", &piece_path, pyb::arg("directory"), pyb::arg("start"), pyb::arg("goal"),
+        pyb::arg("cls"),
+        "A path through a count's pieces; returns (path --json's object, the lines printed). "
+        "Use aspects.piece_path.");
 }
 
 }  // namespace aspects::py

@@ -28,21 +28,6 @@ namespace {
 // the index records it, shifted by one.
 constexpr int8_t kSolution = 0;
 
-// A pose from Python, checked as `--pose` is (count, finite, domain): the numbers are
-// printed with 17 digits, which parse back to the same doubles.
-std::vector<double> checked_pose(const LoadedResult& r, const std::vector<double>& pose,
-                                 const std::string& what) {
-  std::string text;
-  for (double x : pose) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    text += (text.empty() ? "" : ",") + std::string(buf);
-  }
-  if (pose.empty())
-    throw UsageError(what + ": give " + std::to_string(r.model.pose.size()) + " numbers");
-  return parse_pose(text, what, r.model);
-}
-
 // Every box by increasing id: id, lower and upper ends (model order; an undecided box's
 // command ends are NaN, the index keeps only its pose part), status, CSNC, and the signs
 // of the determinant factors on a solution box (0 where its enclosure straddles 0, and on
@@ -165,7 +150,7 @@ void bind_result(pyb::module_& m) {
       .def("_query",
            [](const PyResult& p, const std::vector<double>& pose) {
              const LoadedResult& r = *p.loaded;
-             std::vector<double> x = checked_pose(r, pose, "pose");
+             std::vector<double> x = checked_pose(pose, "pose", r.model);
              ModelEvaluator ev(r.model);
              return to_python(query_json(x, query_pose(r, ev, x), r));
            },
@@ -178,7 +163,7 @@ void bind_result(pyb::module_& m) {
              pyb::list answers;
              for (size_t i = 0; i < poses.size(); ++i) {
                const std::string what = "poses[" + std::to_string(i) + "]";
-               std::vector<double> x = checked_pose(r, poses[i], what);
+               std::vector<double> x = checked_pose(poses[i], what, r.model);
                answers.append(to_python(query_json(x, query_pose(r, ev, x), r)));
              }
              return answers;
@@ -188,8 +173,8 @@ void bind_result(pyb::module_& m) {
            [](const PyResult& p, const std::vector<double>& a, const std::vector<double>& b,
               std::optional<long> csnc) {
              const LoadedResult& r = *p.loaded;
-             std::vector<double> from = checked_pose(r, a, "start");
-             std::vector<double> to = checked_pose(r, b, "goal");
+             std::vector<double> from = checked_pose(a, "start", r.model);
+             std::vector<double> to = checked_pose(b, "goal", r.model);
              // None: any CSNC (plan_path's -1); a negative one is no CSNC.
              if (csnc && (*csnc < 0 || *csnc >= long(r.index.csnc_count)))
                throw UsageError("csnc must be between 0 and " +

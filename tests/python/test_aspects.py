@@ -663,8 +663,8 @@ def test_count_with_a_round_budget_gives_the_lower_bound_and_the_open_places():
 def test_count_refuses_what_the_command_line_refuses():
     model = aspects.Model.from_string(
         "robot r\npose x in [-2, 2]\ncommand q in [-5, 5]\nequation q - x = 0\n"
-        "constraint x <= 1\n", "r.robot")
-    with pytest.raises(ValueError, match=r"r\.robot: count: models with `constraint`"):
+        "factor x + 3\n", "r.robot")
+    with pytest.raises(ValueError, match=r"r\.robot: count: models with `factor`"):
         aspects.count(model)
     with pytest.raises(ValueError, match="rounds must be"):
         aspects.count(PRRP, rounds=0)
@@ -672,3 +672,45 @@ def test_count_refuses_what_the_command_line_refuses():
         aspects.count(PRRP, min_width=1)
     with pytest.raises(TypeError):
         aspects.count(42)
+
+
+def test_count_regions_are_the_aspects_when_exact():
+    c = aspects.count(PRRP)
+    assert len(c.regions) == c.count == 4
+    assert sorted(r.cls for r in c.regions) == ["++", "+-", "-+", "--"]
+    volumes = [r.pose_volume for r in c.regions]
+    assert volumes == sorted(volumes, reverse=True)
+    for r in c.regions:  # x = ±sqrt(1 - q²): an arc of class (sign x, sign q) lies on its side
+        x_lo, x_hi = r.lo[0], r.hi[0]
+        assert (x_hi > 0.99) if r.cls[0] == "+" else (x_lo < -0.99)
+    assert c.to_dict()["regions"][0]["class"] == c.regions[0].cls
+
+
+def test_piece_path_through_a_count_directory(tmp_path):
+    out = tmp_path / "rprpr"
+    c = aspects.count(RPRPR, out=out)
+    assert c.exact and c.count == 2
+    assert sorted(p.name for p in out.iterdir()) == ["count.pieces", "summary.json"]
+    assert json.loads((out / "summary.json").read_text())["lower_bound"] == 2
+    p = aspects.piece_path(out, (3, 2), (4, 1))
+    assert p.found and p.cls == "+--" and p.pieces == 6, p.line
+    assert p.waypoints[0]["kind"] == "start" and p.waypoints[-1]["kind"] == "goal"
+    j = json.loads(cli("path", str(out), "--from", "3,2", "--to", "4,1", "--json").stdout)
+    assert p.to_dict() == j
+    assert str(p) == cli("path", str(out), "--from", "3,2", "--to", "4,1").stdout
+    assert "through 6 pieces of class +-- (one aspect): 7 waypoints, 6 segments" in p.line
+    assert "through 1 piece of class +-- (one aspect): 2 waypoints, 1 segment (0 join points" \
+        in aspects.piece_path(out, (3, 2), (3, 3)).line
+    # The two half-planes x2 > 0 and x2 < 0 are two aspects: refused, with the count exact.
+    q = aspects.piece_path(out, (3, 2), (3, -2))
+    assert not q.found and q.outcome == "different_classes", q.line
+    with pytest.raises(ValueError, match="--class must be 3 signs"):
+        aspects.piece_path(out, (3, 2), (4, 1), cls="+")
+    with pytest.raises(ValueError, match="start expects 2 numbers"):
+        aspects.piece_path(out, (3,), (4, 1))
+    with pytest.raises(aspects.ResultError):
+        aspects.piece_path(tmp_path, (3, 2), (4, 1))
+    with pytest.raises(ValueError, match="holds a solve's result"):
+        (tmp_path / "solved").mkdir()
+        (tmp_path / "solved" / "aspects.idx").write_bytes(b"")
+        aspects.count(PRRP, out=tmp_path / "solved")
