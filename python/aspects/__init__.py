@@ -23,10 +23,11 @@ from .answers import (  # noqa: F401
     Command, CountRegion, CountResult, OpenPlace, PathResult, PiecePathResult, QueryBatch,
     QueryResult, Waypoint,
 )
+from .count_pieces import CountPieces
 from .result import Result, _pose as _pose_list
 
 __all__ = ["Model", "ModelError", "ResultError", "Result", "Interrupted", "solve", "load",
-           "count", "piece_path", "CountResult", "CountRegion", "OpenPlace", "QueryResult",
+           "count", "piece_path", "load_count", "CountPieces", "CountResult", "CountRegion", "OpenPlace", "QueryResult",
            "QueryBatch", "Command", "PathResult", "PiecePathResult", "Waypoint", "__version__"]
 
 
@@ -179,6 +180,15 @@ def piece_path(directory, start, goal, cls=None):
     data, line = _aspects._piece_path(directory, _pose_list(start, "start"),
                                       _pose_list(goal, "goal"), cls or "")
     return PiecePathResult.from_dict(data, line)
+
+
+def load_count(directory):
+    """The pieces of a count directory (what count(out=...) or `aspects count --out` wrote):
+    a CountPieces, whose aspects() labels each piece with its component of the joins (the
+    aspects when the count is exact) and figure() draws them. ResultError when it is not
+    one."""
+    directory = _os.fspath(directory)
+    return CountPieces.from_arrays(_aspects._count_pieces(directory), directory)
 
 
 def load(directory):

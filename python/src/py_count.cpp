@@ -2,11 +2,14 @@
 // `aspects count --json` reports it (run/count_report.h), and its directory (out=); and
 // aspects.piece_path, a certified path through the pieces of such a directory
 // (planning/piece_path.h), as `aspects path DIR --json` reports it.
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "counting/exact_count.h"
 #include "counting/factor_gradients.h"
@@ -16,7 +19,9 @@
 #include "py_common.h"
 #include "py_model.h"
 #include "py_polling.h"
+#include "results/count_pieces.h"
 #include "results/pose.h"
+#include "results/result_index.h"
 #include "results/usage_error.h"
 #include "run/count_dir.h"
 #include "run/count_report.h"
@@ -69,6 +74,60 @@ pyb::tuple piece_path(const std::string& dir, const std::vector<double>& a,
                          pyb::str(piece_path_text(d, from, to, r)));
 }
 
+// A count directory's pieces as arrays: one row per piece proved connected (its cell's id,
+// box and its class), and the joins as pairs of rows. The components of the joins are
+// connected sets of one aspect each; the aspects themselves when the count is exact.
+pyb::dict count_pieces_arrays(const std::string& dir) {
+  const CountDirectory D = load_count_directory(dir);
+  const CountPieces& P = D.pieces;
+  const size_t nv = P.nv;
+  size_t n = 0;
+  for (const CountPieceCell& c : P.cells) n += c.pieces.size();
+  pyb::array_t<int32_t> cell(n);
+  pyb::array_t<uint32_t> cls(n);
+  pyb::array_t<double> lo({n, nv}), hi({n, nv});
+  auto cv = cell.mutable_unchecked<1>();
+  auto kv = cls.mutable_unchecked<1>();
+  auto lov = lo.mutable_unchecked<2>();
+  auto hiv = hi.mutable_unchecked<2>();
+  std::map<std::pair<int32_t, uint32_t>, int64_t> row_of;
+  size_t row = 0;
+  for (const CountPieceCell& c : P.cells)
+    for (const CountPiece& q : c.pieces) {
+      cv(row) = c.id;
+      kv(row) = q.cls;
+      for (size_t v = 0; v < nv; ++v) lov(row, v) = c.box[2 * v], hiv(row, v) = c.box[2 * v + 1];
+      row_of[{c.id, q.cls}] = int64_t(row++);
+    }
+  std::vector<int64_t> a, b;
+  for (const CountJoin& j : P.joins) {
+    const auto x = row_of.find({j.a, j.cls}), y = row_of.find({j.b, j.cls});
+    if (x == row_of.end() || y == row_of.end())
+      throw IndexError(dir + ": a join names a piece the file does not hold");
+    a.push_back(x->second);
+    b.push_back(y->second);
+  }
+  pyb::dict d;
+  d["cell"] = cell;
+  d["cls"] = cls;
+  d["lo"] = lo;
+  d["hi"] = hi;
+  d["join_a"] = pyb::array_t<int64_t>(a.size(), a.data());
+  d["join_b"] = pyb::array_t<int64_t>(b.size(), b.data());
+  d["factors"] = P.factors;
+  d["lower"] = P.lower;
+  d["upper"] = P.upper < 0 ? pyb::object(pyb::none()) : pyb::object(pyb::int_(P.upper));
+  d["eps"] = P.eps;
+  std::vector<std::string> names, pose;
+  for (const auto& v : D.model.vars) names.push_back(v.name);
+  for (int v : D.model.pose) pose.push_back(D.model.vars[v].name);
+  d["variables"] = names;
+  d["pose_variables"] = pose;
+  d["robot"] = D.model.name;
+  d["model_file"] = P.model_file;
+  return d;
+}
+
 }  // namespace
 
 void bind_count(pyb::module_& m) {
@@ -91,6 +150,8 @@ void bind_count(pyb::module_& m) {
         pyb::arg("cls"),
         "A path through a count's pieces; returns (path --json's object, the lines printed). "
         "Use aspects.piece_path.");
+  m.def("_count_pieces", &count_pieces_arrays, pyb::arg("directory"),
+        "A count directory's pieces and joins as arrays. Use aspects.load_count.");
 }
 
 }  // namespace aspects::py

@@ -714,3 +714,21 @@ def test_piece_path_through_a_count_directory(tmp_path):
         (tmp_path / "solved").mkdir()
         (tmp_path / "solved" / "aspects.idx").write_bytes(b"")
         aspects.count(PRRP, out=tmp_path / "solved")
+
+
+def test_load_count_labels_the_aspects_and_draws_them(tmp_path):
+    aspects.count(PRRP, out=tmp_path / "prrp")
+    c = aspects.load_count(tmp_path / "prrp")
+    assert c.exact and c.lower == c.upper == 4 and c.robot == "PRRP"
+    labels = c.aspects()
+    assert labels.shape == c.cls.shape and labels.max() + 1 == 4
+    # One class per aspect: the circle's four quarter arcs.
+    for a in range(4):
+        assert len(set(c.cls[labels == a].tolist())) == 1
+    assert sorted(c.class_signs(k) for k in set(c.cls.tolist())) == ["++", "+-", "-+", "--"]
+    c.figure(tmp_path / "prrp.png", x="x", y="q")
+    assert (tmp_path / "prrp.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(ValueError, match="no variable 'z'"):
+        c.figure(tmp_path / "bad.png", x="x", y="z")
+    with pytest.raises(aspects.ResultError):
+        aspects.load_count(tmp_path)
