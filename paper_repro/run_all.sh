@@ -11,8 +11,9 @@
 #   run_info.txt            mode, command line, commit, build, total time
 #   beyond_3rrr.md, figures/3rrr_bound.png, figures/3rrr_csncs.png   the full 3-RRR, its sampling only as a numerical cross-check
 #                           (thick grid components of robots/3rrr_sampling.py, no count; when 3rrr was run)
-#   count_3rrr_star.md      `aspects count` on 3-RRR* (lower = upper, or the bounds reached with
-#                           --quick), and check_cert's verdict on its certificate (archived too)
+#   count_3rrr_star.md, figures/3rrr_star_aspects.png   `aspects count` on 3-RRR* (lower = upper,
+#                           or the bounds reached with --quick), check_cert's verdict on its
+#                           certificate (archived too), and its aspects, one colour each
 #
 # Everything is written in a temporary directory next to OUT and renamed at the end, so
 # an interrupted run (Ctrl-C, SIGTERM) leaves OUT as it was.
@@ -425,6 +426,14 @@ count_3rrr_star() {
     echo "$line"
     echo '```'
   } > "$TMP/count_3rrr_star.md"
+  # The figure of its aspects, one panel per sign class (the Python module's CountPieces).
+  if [ -d "$BUILD/python/aspects" ]; then
+    PYTHONPATH="$BUILD/python" run_child "$PY" -c 'import sys, aspects
+aspects.load_count(sys.argv[1]).figure(sys.argv[2])' "$cd_/dir" "$TMP/figures/3rrr_star_aspects.png" \
+      2>> "$cd_/count.log" || FAILURES+=("3-RRR* aspects figure failed: $(tail -n 1 "$cd_/count.log")")
+  else
+    WARNINGS+=("3-RRR* aspects figure not drawn: no Python module in $BUILD/python")
+  fi
   "${COMPRESS[@]}" "$cd_/count.ccert" > "$TMP/archive/3rrr_star_count.ccert.$CEXT"
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "3rrr_star_count.ccert.$CEXT" \
     "$(sha256sum "$TMP/archive/3rrr_star_count.ccert.$CEXT" | cut -d' ' -f1)" \
