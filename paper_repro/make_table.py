@@ -21,7 +21,7 @@ PAPER = {
                   csncs_filtered=10, separated=10, time=38),
     "3rpr": dict(aspects="2", eps=0.3, boxes=13564854, boxes_filtered=5833951, csncs=44220,
                  csncs_filtered=2, separated=2, time=12700),
-    "3rrr_star": dict(aspects="unknown", eps=0.008, boxes=11870068, boxes_filtered=5841193,
+    "3rrr_star": dict(aspects="27 (aspects count)", eps=0.008, boxes=11870068, boxes_filtered=5841193,
                       csncs=56269, csncs_filtered=25, separated=25, time=10700),
     "rrrrr_collisions": dict(aspects=None, eps=0.01, boxes=None, boxes_filtered=None,
                              csncs=None, csncs_filtered=10, separated=None, time=None),
