@@ -2,9 +2,11 @@
 """Interleaved comparison of `aspects solve` variants (binaries and/or options) on the
 same cases, for ablation tables: on a shared, noisy machine, variant A and B alternate
 run by run so that both see the same load. Reports medians of wall and CPU seconds,
-the output boxes (solution/undecided) and the peak RSS. Usage:
+the output boxes (solution/undecided) and the peak RSS. With --count, the variants run
+`aspects count` (EPS is its first cover's) and the table gives its bounds (exact counts),
+rounds and boxes instead. Usage:
 
-    bench/ablate.py [--repeat 3] [--threads 1] --variant NAME=BINARY[,ARG...] ... CASE ...
+    bench/ablate.py [--repeat 3] [--threads 1] [--count] --variant NAME=BINARY[,ARG...] ... CASE ...
 
 A CASE is ROBOT:EPS (a file under robots/ without .robot, or a path), e.g. rrrrr:0.3.
 Example (before/after of one change, old binary built from the previous commit):
@@ -12,7 +14,7 @@ Example (before/after of one change, old binary built from the previous commit):
     bench/ablate.py --variant before=/tmp/aspects.old --variant after=build/apps/aspects rrrrr:0.3
 
 Prints a Markdown table to stdout."""
-import argparse, os, statistics, subprocess, sys
+import argparse, json, os, statistics, subprocess, sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -33,11 +35,28 @@ def solve(binary, args, model, eps, threads):
             f"{links}; CSNCs {csncs}; bound {bound}")
 
 
+def count(binary, args, model, eps, threads):
+    cmd = ["/usr/bin/time", "-f", "%e %U %S %M", binary, "count", model, "--eps", eps,
+           "--threads", str(threads), "--json"] + args
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode not in (0, 3):  # 3: stopped by --time-limit, the bounds reached hold
+        sys.exit(f"ablate: {' '.join(cmd)} failed ({p.returncode}):\n{p.stderr}")
+    wall, user, sys_, rss = p.stderr.strip().splitlines()[-1].split()
+    j = json.loads(p.stdout)
+    upper = "?" if j["upper_bound"] is None else j["upper_bound"]
+    bounds = f"{j['lower_bound']}" if j["exact"] else f"{j['lower_bound']}..{upper}"
+    return (float(wall), float(user) + float(sys_), int(rss),
+            f"{j['boxes']} (first cover {j['first_cover']['boxes']})",
+            f"{bounds}; {j['rounds']} rounds; {j['stop']}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--variant", action="append", required=True)
+    ap.add_argument("--count", action="store_true",
+                    help="run `aspects count` (its bounds, rounds and boxes) instead of solve")
     ap.add_argument("--counts", action="store_true",
                     help="add a column with the links, CSNCs and the lower bound")
     ap.add_argument("cases", nargs="+")
@@ -48,8 +67,11 @@ def main():
         parts = spec.split(",")
         variants.append((name, parts[0], parts[1:]))
     print(f"threads {a.threads}, {a.repeat} interleaved runs per variant\n")
-    extra = " links; CSNCs; bound |" if a.counts else ""
-    print("| robot | eps | variant | median wall s | median CPU s | boxes (solution, undecided) | peak MiB |" + extra)
+    run = count if a.count else solve
+    a.counts = a.counts or a.count
+    extra = (" aspects; rounds; stop |" if a.count else " links; CSNCs; bound |") if a.counts else ""
+    boxes = "boxes" if a.count else "boxes (solution, undecided)"
+    print(f"| robot | eps | variant | median wall s | median CPU s | {boxes} | peak MiB |" + extra)
     print("|---|---|---|---|---|---|---|" + ("---|" if a.counts else ""))
     for case in a.cases:
         robot, eps = case.rsplit(":", 1)
@@ -57,7 +79,7 @@ def main():
         results = {name: [] for name, _, _ in variants}
         for _ in range(a.repeat):
             for name, binary, args in variants:
-                results[name].append(solve(binary, args, model, eps, a.threads))
+                results[name].append(run(binary, args, model, eps, a.threads))
         for name, _, _ in variants:
             r = results[name]
             print(f"| {os.path.basename(robot)} | {eps} | {name} | "
