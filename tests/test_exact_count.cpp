@@ -4,6 +4,7 @@
 
 #include "counting/exact_count.h"
 #include "model/model.h"
+#include "search/stop_condition.h"
 
 using namespace aspects;
 
@@ -128,4 +129,19 @@ TEST(ExactCount, TwoAspectsOfOneClassMeetingOnlyInUndecidedBoxes) {
   EXPECT_EQ(r.separation_bound, 2);
   EXPECT_EQ(r.bounds.lower, 3);
   EXPECT_EQ(r.bounds.upper, 3);
+}
+
+// Stopped before its first decision: the bounds are the first cover's, and every open piece
+// is said to be one not decided before the stop (the reasons once added up to 0 of N).
+TEST(ExactCount, AStopBeforeTheFirstDecisionSaysSo) {
+  Model m = load_model(std::string(ASPECTS_ROBOTS_DIR) + "/rrrrr.robot");
+  StopCondition stop;
+  stop.set_time_limit(1e-9);
+  CountConfig cfg;
+  cfg.stop = &stop;
+  const CountResult r = count_aspects(m, cfg);
+  EXPECT_EQ(r.stop, CountStop::Stopped);
+  EXPECT_EQ(r.bounds.upper, -1);
+  EXPECT_GE(r.bounds.open_pieces, 1);
+  EXPECT_EQ(r.open_by_reason[int(OpenReason::NotReached)], r.bounds.open_pieces);
 }

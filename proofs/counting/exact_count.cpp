@@ -196,6 +196,8 @@ class Counter {
           out.bounds = CountBounds{};
           out.bounds.lower = separation_bound_;
           for (const Cell& c : cells_) out.bounds.open_pieces += c.alive && !c.solution;
+          // Said as what it is: none of them was decided.
+          out.open_by_reason[int(OpenReason::NotReached)] = out.bounds.open_pieces;
           break;
         }
         // The boxes not decided yet have undecided pieces: the bounds still hold.

@@ -104,9 +104,10 @@ class CountPieces:
                 ax.add_collection(PolyCollection(polys, facecolors=[colors[a]],
                                                  edgecolors=[colors[a]], linewidths=0.3))
             ax.autoscale_view()
-            # An aspect too small to see at the panel's scale is ringed.
+            # An aspect too small to see at the panel's scale is ringed (the aspects of an
+            # exact count: a stopped one's joined sets are too many to ring).
             (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-            for a in ids:
+            for a in ids if self.exact else ():
                 sel = mine & (labels == a)
                 lo, hi = self.lo[sel], self.hi[sel]
                 w = max(hi[:, ix].max() - lo[:, ix].min(), 0) / (x1 - x0)
@@ -124,7 +125,7 @@ class CountPieces:
         claim = (f"{pl.aspects_word(self.lower)} (certified: lower = upper)" if self.exact else
                  f"at least {pl.aspects_word(self.lower)} (certified); components of the "
                  f"joined pieces, each inside one aspect")
-        fig.suptitle(f"{self.robot}: {claim}; sign classes over "
+        fig.suptitle(f"{self.robot}: {claim}\nsign classes over "
                      f"{', '.join(_origin(f) for f in self.factors)}", fontsize=10)
         fig.tight_layout()
         pl.save(fig, out, dpi)
