@@ -84,6 +84,14 @@ class CountCheck {
   bool refute(const Box& b);
   bool no_class(std::vector<Ival> b, Mask cls, int depth, long& budget);
   bool factors(const std::vector<Ival>& box, std::vector<Ival>& out);
+  // The constraints on box b (FORMAT.md, "Counting", C7): False, True, Atoms (then `atoms`,
+  // formula ids: what is left is their conjunction) or Disjunction (an `or` of two Unknown
+  // disjuncts or more is left).
+  enum class Reduced { False, True, Atoms, Disjunction };
+  Reduced reduce(const std::vector<Ival>& b, std::vector<int>& atoms);
+  int reduce_formula(int f, std::vector<int>& atoms, bool& conjunction);
+  // Every constraint True on b.
+  bool feasible(const std::vector<Ival>& b);
   Mask excluded(const Box& b);
   Mask excluded(const std::vector<Ival>& b);
   bool point(const Box& box, const std::vector<int>& w, const std::vector<double>& u,

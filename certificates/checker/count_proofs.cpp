@@ -135,6 +135,40 @@ bool CountCheck::factors(const std::vector<Ival>& box, std::vector<Ival>& out) {
   return true;
 }
 
+bool CountCheck::feasible(const std::vector<Ival>& b) {
+  limit();
+  return c_.ev->feasible(b.data()) == 2;
+}
+
+// Kleene's truth of each atom on the box (eval.cpp) decides the formula at every point of the
+// box where it is True or False; what is left where it is Unknown: an `and` of what is left of
+// its Unknown conjuncts, an `or` of its one Unknown disjunct (two or more: not a conjunction).
+int CountCheck::reduce_formula(int f, std::vector<int>& atoms, bool& conjunction) {
+  const Formula& F = c_.m.formulas[f];
+  const int t = c_.ev->formula_truth(f);
+  if (t != 1) return t;
+  if (F.kind == Formula::Atom) {
+    atoms.push_back(f);
+    return 1;
+  }
+  int unknown = 0;
+  for (int k : F.kids)
+    if (c_.ev->formula_truth(k) == 1) ++unknown, reduce_formula(k, atoms, conjunction);
+  if (F.kind == Formula::Or && unknown > 1) conjunction = false;
+  return 1;
+}
+
+CountCheck::Reduced CountCheck::reduce(const std::vector<Ival>& b, std::vector<int>& atoms) {
+  atoms.clear();
+  if (c_.m.constraints.empty()) return Reduced::True;
+  limit();
+  if (c_.ev->feasible(b.data()) == 0) return Reduced::False;  // evaluates every atom on b
+  bool conjunction = true, unknown = false;
+  for (int c : c_.m.constraints) unknown = (reduce_formula(c, atoms, conjunction) == 1) || unknown;
+  if (!unknown) return Reduced::True;
+  return conjunction ? Reduced::Atoms : Reduced::Disjunction;
+}
+
 // The classes no point of the box can have: some factor's enclosure on the box is ≤ 0
 // where the class needs it > 0, or ≥ 0 where it needs it < 0.
 Mask CountCheck::excluded(const std::vector<Ival>& b) {
@@ -201,6 +235,8 @@ bool CountCheck::point(const Box& box, const std::vector<int>& w, const std::vec
       if (!factors(b, g)) return false;
       for (int i = 0; i < c_.p; ++i)
         if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) return false;
+      // A feasible point: every constraint True on (u, H).
+      if (!feasible(b)) return false;
       if (at) *at = y;
       return true;
     }
@@ -279,6 +315,8 @@ bool CountCheck::paving(const Cell& cell, Mask cls) {
       cleared = !b[v].meet(box_w);
     }
     if (!cleared) cleared = (excluded(b) >> cls) & 1;
+    // No feasible point over the part: a constraint False on it.
+    if (!cleared && !c_.m.constraints.empty()) cleared = c_.ev->feasible(b.data()) == 0;
     if (cleared) continue;
     if (!halve_widest_u(cell, uv, 1e-9, std::move(z), stack)) return false;
   }
