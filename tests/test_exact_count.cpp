@@ -143,17 +143,45 @@ TEST(ExactCount, TwoBoundariesCrossingOnTheCurveLeaveTheCountOpen) {
   EXPECT_GE(r.open[0].hi[0], 0.6);
 }
 
+// |x − 0.7| ≥ 0.1 cuts each quarter x > 0 in two: 6 aspects. From ε 8 too: the first cover
+// is then one box, and the boxes the refinement charts hold both sides of a cut (a star test
+// blind to the constraint, or a witness in the cut, would join them).
+TEST(ExactCount, ACircleWithAGapInTwoQuarters) {
+  for (double eps : {0.5, 8.0}) {
+    const CountResult r = count(circle("(x - 0.7)^2 >= 0.01"), eps);
+    EXPECT_EQ(r.bounds.lower, 6) << "eps " << eps;
+    EXPECT_EQ(r.bounds.upper, 6) << "eps " << eps;
+  }
+}
+
+// One arc, q = √(1 − x²) over x ∈ [0.1, 0.99], one sign class and one chart over the whole
+// domain, cut in two by |x − 0.7| ≥ 0.1: 2 aspects. At ε 8 the first cover is that one box:
+// its piece is the arc less the cut, not star-shaped about any centre; the halves that the
+// refinement makes meet in the cut, where no witness is feasible.
+TEST(ExactCount, OneArcCutInTwoInsideOneChart) {
+  for (double eps : {0.5, 8.0}) {
+    const CountResult r = count(
+        "robot arc\npose x in [0.1, 0.99]\ncommand q in [0, 2]\nequation x^2 + q^2 = 1\n"
+        "constraint (x - 0.7)^2 >= 0.01\n",
+        eps);
+    EXPECT_EQ(r.bounds.lower, 2) << "eps " << eps;
+    EXPECT_EQ(r.bounds.upper, 2) << "eps " << eps;
+  }
+}
+
 // q = x³/3 − x (aspects x < −1, −1 < x < 1, x > 1), cut by a constraint that keeps two
 // parts of the middle aspect, one sign class: 4 aspects. As one closed atom, and as a
 // disjunction of two strict ones.
 TEST(ExactCount, AConstraintCutsOneAspectIntoTwoOfOneClass) {
   const std::string cubic =
       "robot cubic\npose x in [-2, 2]\ncommand q in [-5, 5]\nequation q - x^3/3 + x = 0\n";
-  for (const char* c : {"constraint x^2 >= 0.04\n", "constraint x > 0.2 or x < -0.2\n"}) {
-    const CountResult r = count(cubic + c);
-    EXPECT_EQ(r.bounds.lower, 4) << c;
-    EXPECT_EQ(r.bounds.upper, 4) << c;
-  }
+  // ε 8: the first cover's one box holds both parts of the middle aspect.
+  for (double eps : {0.5, 8.0})
+    for (const char* c : {"constraint x^2 >= 0.04\n", "constraint x > 0.2 or x < -0.2\n"}) {
+      const CountResult r = count(cubic + c, eps);
+      EXPECT_EQ(r.bounds.lower, 4) << c << " eps " << eps;
+      EXPECT_EQ(r.bounds.upper, 4) << c << " eps " << eps;
+    }
 }
 
 // A constraint False on the whole domain's solutions: no aspect.
