@@ -169,6 +169,16 @@ TEST(ExactCount, OneArcCutInTwoInsideOneChart) {
   }
 }
 
+// x ≥ 0.6 or 2x − q ≥ 0.4: both boundaries cross the first quarter at (0.6, 0.8), where no
+// box decides either disjunct; but there both hold on the same side (x ≥ 0.6), so the piece
+// is the union of two sets star-shaped about one centre. Feasible: x ∈ [0.6, 1) of the first
+// quarter, the whole fourth, x ∈ [−0.28, 0) of the third (2x + √(1 − x²) ≥ 0.4): 3 aspects.
+TEST(ExactCount, TwoBoundariesCrossingOnTheCurveWithAUnionStarShaped) {
+  const CountResult r = count(circle("x >= 0.6 or 2*x - q >= 0.4"));
+  EXPECT_EQ(r.bounds.lower, 3);
+  EXPECT_EQ(r.bounds.upper, 3);
+}
+
 // q = x³/3 − x (aspects x < −1, −1 < x < 1, x > 1), cut by a constraint that keeps two
 // parts of the middle aspect, one sign class: 4 aspects. As one closed atom, and as a
 // disjunction of two strict ones.

@@ -230,8 +230,8 @@ void CountCheck::piece() {
     } else if (proof == "paving") {
       if (!paving(cell, cls)) reject("empty by paving: a part could not be cleared" + c_.show(cell.box));
     } else if (proof == "constraint") {
-      std::vector<int> atoms;
-      if (reduce(ivals(cell.box), atoms) != Reduced::False)
+      Dnf terms;
+      if (reduce(ivals(cell.box), terms) != Reduced::False)
         reject("empty by a constraint: no constraint is False on the box" + c_.show(cell.box));
     } else if (proof == "other-class") {
       cell.other_class |= Mask(1) << cls;  // checked once every piece is read

@@ -171,6 +171,22 @@ bool CountCheck::implicit_jacobian(const std::vector<Ival>& b, const std::vector
 // most 8192 parts).
 bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
                       const std::vector<double>& v, const Box& hint) {
+  // The model's constraints on the box (C7): False, or an `or` left with more terms than
+  // kMaxTerms: not tested; else the piece is the union over the terms of the graph over
+  // {u : the factors, the faces and the term's atoms hold}, star-shaped about v when each is.
+  Dnf terms;
+  const Reduced reduced = reduce(ivals(cell.box), terms);
+  if (reduced == Reduced::False || (reduced == Reduced::Disjunction && terms.empty())) return false;
+  if (reduced == Reduced::True) terms = {{}};
+  for (const std::vector<int>& atoms : terms)
+    if (!star_term(cell, cls, w, v, hint, atoms)) return false;
+  return true;
+}
+
+// One term: the star-shaped test with the term's atoms (formula ids) among the constraints.
+bool CountCheck::star_term(const Cell& cell, Mask cls, const std::vector<int>& w,
+                           const std::vector<double>& v, const Box& hint,
+                           const std::vector<int>& atoms) {
   if (cell.w.empty() || w != cell.w || !inside_root(cell.box)) return false;
   std::vector<int> uv;
   for (int x = 0; x < nv_; ++x)
@@ -189,11 +205,7 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
     if (crosses(cell, j, false)) cs.push_back({1, j});
     if (crosses(cell, j, true)) cs.push_back({2, j});
   }
-  // The model's constraints on the box (C7): an atom left Unknown is one more constraint,
-  // strict or closed; False or an `or` of Unknown atoms: not tested.
-  std::vector<int> atoms;
-  const Reduced reduced = reduce(ivals(cell.box), atoms);
-  if (reduced == Reduced::False || reduced == Reduced::Disjunction) return false;
+  // Each atom of the term is one more constraint, strict or closed.
   for (int f : atoms) cs.push_back({c_.m.formulas[f].strict ? 3 : 4, f});
   auto atom_values = [&](const std::vector<Ival>& b) {
     limit();

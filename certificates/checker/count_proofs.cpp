@@ -141,32 +141,63 @@ bool CountCheck::feasible(const std::vector<Ival>& b) {
 }
 
 // Kleene's truth of each atom on the box (eval.cpp) decides the formula at every point of the
-// box where it is True or False; what is left where it is Unknown: an `and` of what is left of
-// its Unknown conjuncts, an `or` of its one Unknown disjunct (two or more: not a conjunction).
-int CountCheck::reduce_formula(int f, std::vector<int>& atoms, bool& conjunction) {
+// box where it is True or False; what is left of an Unknown formula, as a disjunction of
+// conjunctions of atoms: an atom's is itself, an `and`'s the products of its Unknown
+// conjuncts' terms, an `or`'s the union of its Unknown disjuncts' terms. False: too many.
+namespace {
+std::vector<std::vector<int>> dnf_product(const std::vector<std::vector<int>>& a,
+                                          const std::vector<std::vector<int>>& b) {
+  std::vector<std::vector<int>> out;
+  for (const auto& x : a)
+    for (const auto& y : b) {
+      std::vector<int> t = x;
+      t.insert(t.end(), y.begin(), y.end());
+      std::sort(t.begin(), t.end());
+      t.erase(std::unique(t.begin(), t.end()), t.end());
+      out.push_back(std::move(t));
+    }
+  return out;
+}
+}  // namespace
+
+bool CountCheck::reduce_formula(int f, Dnf& dnf) {
   const Formula& F = c_.m.formulas[f];
-  const int t = c_.ev->formula_truth(f);
-  if (t != 1) return t;
   if (F.kind == Formula::Atom) {
-    atoms.push_back(f);
-    return 1;
+    dnf = {{f}};
+    return true;
   }
-  int unknown = 0;
-  for (int k : F.kids)
-    if (c_.ev->formula_truth(k) == 1) ++unknown, reduce_formula(k, atoms, conjunction);
-  if (F.kind == Formula::Or && unknown > 1) conjunction = false;
-  return 1;
+  const bool is_and = F.kind == Formula::And;
+  dnf.clear();
+  if (is_and) dnf = {{}};
+  for (int k : F.kids) {
+    if (c_.ev->formula_truth(k) != 1) continue;  // True conjunct, False disjunct: dropped
+    Dnf kid;
+    if (!reduce_formula(k, kid)) return false;
+    if (is_and) dnf = dnf_product(dnf, kid);
+    else dnf.insert(dnf.end(), kid.begin(), kid.end());
+    if (dnf.size() > kMaxTerms) return false;
+  }
+  return true;
 }
 
-CountCheck::Reduced CountCheck::reduce(const std::vector<Ival>& b, std::vector<int>& atoms) {
-  atoms.clear();
+CountCheck::Reduced CountCheck::reduce(const std::vector<Ival>& b, Dnf& terms) {
+  terms.clear();
   if (c_.m.constraints.empty()) return Reduced::True;
   limit();
   if (c_.ev->feasible(b.data()) == 0) return Reduced::False;  // evaluates every atom on b
-  bool conjunction = true, unknown = false;
-  for (int c : c_.m.constraints) unknown = (reduce_formula(c, atoms, conjunction) == 1) || unknown;
+  Dnf all{{}};
+  bool unknown = false, fits = true;
+  for (int c : c_.m.constraints) {
+    if (c_.ev->formula_truth(c) != 1) continue;  // True (none is False)
+    unknown = true;
+    Dnf d;
+    fits = fits && reduce_formula(c, d);
+    if (fits) all = dnf_product(all, d);
+    fits = fits && all.size() <= kMaxTerms;
+  }
   if (!unknown) return Reduced::True;
-  return conjunction ? Reduced::Atoms : Reduced::Disjunction;
+  if (fits) terms = std::move(all);
+  return fits && terms.size() == 1 ? Reduced::Atoms : Reduced::Disjunction;
 }
 
 // The classes no point of the box can have: some factor's enclosure on the box is ≤ 0

@@ -1,5 +1,7 @@
 #include "counting/constraint_reduction.h"
 
+#include <algorithm>
+
 namespace aspects {
 
 ConstraintReducer::ConstraintReducer(const Model& m) : m_(m) {
@@ -14,10 +16,29 @@ ConstraintReducer::ConstraintReducer(const Model& m) : m_(m) {
     }
 }
 
+namespace {
+
+// The conjunction of two DNFs: every pair of terms, each term's atoms sorted and unique.
+std::vector<std::vector<int>> product(const std::vector<std::vector<int>>& a,
+                                      const std::vector<std::vector<int>>& b) {
+  std::vector<std::vector<int>> out;
+  for (const auto& x : a)
+    for (const auto& y : b) {
+      std::vector<int> t = x;
+      t.insert(t.end(), y.begin(), y.end());
+      std::sort(t.begin(), t.end());
+      t.erase(std::unique(t.begin(), t.end()), t.end());
+      out.push_back(std::move(t));
+    }
+  return out;
+}
+
+}  // namespace
+
 // The atoms' truth is model/constraints.h's (one status for every atom: undefined
-// somewhere blocks True).
-ConstraintReducer::Part ConstraintReducer::reduce(ModelEvaluator& ev, int id, bool defined,
-                                                  std::vector<int>& atoms) const {
+// somewhere blocks True). What is left of an Unknown formula, as a disjunction of
+// conjunctions of its Unknown atoms (too long: `overflow`).
+ConstraintReducer::Part ConstraintReducer::reduce(ModelEvaluator& ev, int id, bool defined) const {
   const FormulaNode& f = m_.formula[id];
   if (f.kind == FormulaNode::Atom) {
     const Interval& g = ev.value(f.expr);
@@ -25,59 +46,57 @@ ConstraintReducer::Part ConstraintReducer::reduce(ModelEvaluator& ev, int id, bo
     mpfr_srcptr lo = &g.get()->left, hi = &g.get()->right;
     if (f.strict ? mpfr_sgn(hi) <= 0 : mpfr_sgn(hi) < 0) return {0};
     if (defined && (f.strict ? mpfr_sgn(lo) > 0 : mpfr_sgn(lo) >= 0)) return {2};
-    atoms.push_back(atom_of_formula_[id]);
-    return {1, true};
+    return {1, {{atom_of_formula_[id]}}};
   }
   const bool is_and = f.kind == FormulaNode::And;
-  const size_t mark = atoms.size();
+  Part out{1, {}};
+  if (is_and) out.dnf = {{}};
   int unknown = 0;
-  bool conjunction = true;
   for (int k : f.kids) {
-    const size_t before = atoms.size();
-    const Part p = reduce(ev, k, defined, atoms);
-    if (p.truth == (is_and ? 0 : 2)) {  // decides the whole formula
-      atoms.resize(mark);
-      return {p.truth};
-    }
-    if (p.truth != 1) {
-      atoms.resize(before);
-      continue;
-    }
+    Part p = reduce(ev, k, defined);
+    if (p.truth == (is_and ? 0 : 2)) return {p.truth};  // decides the whole formula
+    if (p.truth != 1) continue;
     ++unknown;
-    conjunction = conjunction && p.conjunction;
+    out.overflow = out.overflow || p.overflow;
+    if (out.overflow) continue;
+    if (is_and) {
+      out.dnf = product(out.dnf, p.dnf);
+    } else {
+      out.dnf.insert(out.dnf.end(), p.dnf.begin(), p.dnf.end());
+    }
+    out.overflow = out.dnf.size() > kMaxTerms;
   }
-  if (unknown == 0) {
-    atoms.resize(mark);
-    return {is_and ? 2 : 0};
-  }
-  // An `or` whose one Unknown disjunct is left is that disjunct.
-  if (!is_and && unknown > 1) conjunction = false;
-  return {1, conjunction};
+  if (unknown == 0) return {is_and ? 2 : 0};
+  if (out.overflow) out.dnf.clear();
+  return out;
 }
 
 ReducedConstraints ConstraintReducer::reduce(ModelEvaluator& ev, const Box& box) const {
   ReducedConstraints out;
   if (m_.constraints.empty()) return out;
   const bool defined = ev.nodes(program_, box) == EvalStatus::Defined;
-  bool conjunction = true, unknown = false;
+  std::vector<std::vector<int>> dnf{{}};
+  bool unknown = false, overflow = false;
   for (const Constraint& c : m_.constraints) {
-    const Part p = reduce(ev, c.root, defined, out.atoms);
+    Part p = reduce(ev, c.root, defined);
     if (p.truth == 0) {
       out.outcome = Reduced::False;
-      out.atoms.clear();
       return out;
     }
-    if (p.truth == 1) unknown = true, conjunction = conjunction && p.conjunction;
+    if (p.truth != 1) continue;
+    unknown = true;
+    overflow = overflow || p.overflow;
+    if (!overflow) dnf = product(dnf, p.dnf);
+    overflow = overflow || dnf.size() > kMaxTerms;
   }
-  if (!unknown) {
-    out.outcome = Reduced::True;
-    out.atoms.clear();
-  } else if (!conjunction) {
-    out.outcome = Reduced::Disjunction;
-    out.atoms.clear();
-  } else {
+  if (!unknown) return out;  // True
+  if (!overflow && dnf.size() == 1) {
     out.outcome = Reduced::Atoms;
+    out.atoms = std::move(dnf[0]);
+    return out;
   }
+  out.outcome = Reduced::Disjunction;
+  if (!overflow) out.terms = std::move(dnf);
   return out;
 }
 

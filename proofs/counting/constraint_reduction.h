@@ -6,7 +6,9 @@
 // True. When what is left of every constraint is a conjunction of Unknown atoms, the
 // feasible points of B are exactly the points of B where each of those atoms holds: each
 // one becomes a constraint of the pieces (strict g > 0 or closed g ≥ 0). An `or` with two
-// Unknown disjuncts or more is a union, which the star-shaped test does not decide.
+// Unknown disjuncts or more leaves a union: what is left, expanded into a disjunction of at
+// most kMaxTerms conjunctions of atoms (`terms`), makes the piece a union of sets each given
+// by conjunctions, which is star-shaped about v when each of them is (C7).
 #pragma once
 
 #include <cstdint>
@@ -20,13 +22,18 @@ enum class Reduced : uint8_t {
   True,         // every constraint holds on the whole box
   False,        // some constraint holds nowhere on the box
   Atoms,        // the feasible points are those where every atom of `atoms` holds
-  Disjunction,  // an `or` of two Unknown disjuncts or more remains
+  Disjunction,  // an `or` of two Unknown disjuncts or more remains: a union of `terms`
 };
 
 struct ReducedConstraints {
   Reduced outcome = Reduced::True;
   std::vector<int> atoms;  // indices into model.constraint_atoms (Atoms only)
+  // Disjunction: the feasible points of the box are those where every atom of some term
+  // holds (each term: indices into model.constraint_atoms); empty when longer than kMaxTerms.
+  std::vector<std::vector<int>> terms;
 };
+
+constexpr size_t kMaxTerms = 4;
 
 class ConstraintReducer {
  public:
@@ -39,9 +46,10 @@ class ConstraintReducer {
  private:
   struct Part {
     int truth;  // 0 False, 1 Unknown, 2 True
-    bool conjunction = true;  // Unknown: what is left is a conjunction of atoms
+    std::vector<std::vector<int>> dnf = {};  // Unknown: what is left, or- of and- of atoms
+    bool overflow = false;                   // Unknown: more than kMaxTerms terms
   };
-  Part reduce(ModelEvaluator& ev, int formula, bool defined, std::vector<int>& atoms) const;
+  Part reduce(ModelEvaluator& ev, int formula, bool defined) const;
 
   const Model& m_;
   std::vector<int> program_;

@@ -433,14 +433,22 @@ class Counter {
     // Unknown atoms, undecided; else the atoms left are constraints of the pieces.
     if (constraint_false(c, classes)) return;
     const ReducedConstraints reduced = reducer_.reduce(ev_, c.box);
-    if (reduced.outcome == Reduced::Disjunction ||
-        (c.solution && reduced.outcome != Reduced::True)) {
+    const bool is_union = reduced.outcome == Reduced::Disjunction;
+    if ((is_union && reduced.terms.empty()) || (c.solution && reduced.outcome != Reduced::True)) {
       for (uint32_t s : classes)
         c.pieces.push_back({s, PieceState::Undecided, OpenReason::ConstraintBoundary});
       c.split_in = chart.u;
       return;
     }
-    const std::vector<int>& atoms = reduced.atoms;  // empty unless Reduced::Atoms
+    // The piece is the union over the terms of the graph over {u : the factors, the faces
+    // and the term's atoms hold}: star-shaped about v when each is (one centre for all).
+    const std::vector<std::vector<int>> terms =
+        is_union ? reduced.terms : std::vector<std::vector<int>>{reduced.atoms};
+    std::vector<int> atoms;  // every atom of every term: the centre satisfies them all
+    for (const std::vector<int>& t : terms)
+      for (int k : t)
+        if (std::find(atoms.begin(), atoms.end(), k) == atoms.end()) atoms.push_back(k);
+    const OpenReason not_star = is_union ? OpenReason::ConstraintBoundary : OpenReason::NotStar;
     std::vector<Interval> zv;
     const bool zdefined = fg_.values(ev_, c.box, zv);  // the piece lies in the box
     const bool certain = zdefined && all_signs_certain(zv);
@@ -493,22 +501,25 @@ class Counter {
             prove_piece_empty(ev_, fg_, chart, c.box, s, ws_, 4000,
                               check_.empty() ? nullptr : &check_) == EmptyVerdict::Empty;
         c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
-                            OpenReason::NoPoint,
+                            is_union ? OpenReason::ConstraintBoundary : OpenReason::NoPoint,
                             empty ? CountCellRecord::Paving : CountCellRecord::NotEmpty});
         continue;
       }
-      std::vector<StarConstraint> tests = faces;
+      std::vector<StarConstraint> base = faces;
       for (int i = 0; i < p; ++i)
         if (!zdefined || !(zv[i].certainly_pos() || zv[i].certainly_neg()))
-          tests.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
-      for (int k : atoms)
-        tests.push_back({reducer_.strict(k) ? StarConstraint::AtomStrict : StarConstraint::AtomClosed,
-                         k, 1, 0});
-      const bool star = atoms_defined &&
-                        star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{}, ws_,
-                                  star_boxes_, atoms_) == StarVerdict::StarShaped;
+          base.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
+      bool star = atoms_defined;
+      for (size_t t = 0; t < terms.size() && star; ++t) {
+        std::vector<StarConstraint> tests = base;
+        for (int k : terms[t])
+          tests.push_back(
+              {reducer_.strict(k) ? StarConstraint::AtomStrict : StarConstraint::AtomClosed, k, 1, 0});
+        star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{}, ws_,
+                         star_boxes_, atoms_) == StarVerdict::StarShaped;
+      }
       c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
-                          OpenReason::NotStar, CountCellRecord::NotEmpty, centre,
+                          not_star, CountCellRecord::NotEmpty, centre,
                           star ? CountCellRecord::Star : CountCellRecord::NotConnected});
       if (!star) c.split_in = chart.u;
     }

@@ -32,6 +32,7 @@ CASES = [
     ("seam", os.path.join(MODELS, "count_seam.robot"), "0.5", 2),
     ("circle_closed", os.path.join(MODELS, "count_circle_closed.robot"), "0.5", 2),
     ("circle_or", os.path.join(MODELS, "count_circle_or.robot"), "0.5", 3),
+    ("circle_union", os.path.join(MODELS, "count_circle_union.robot"), "0.5", 3),
 ]
 
 
