@@ -503,6 +503,8 @@ class Counter {
         c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
                             is_union ? OpenReason::ConstraintBoundary : OpenReason::NoPoint,
                             empty ? CountCellRecord::Paving : CountCellRecord::NotEmpty});
+        // No centre in every term: bisected in u, as a box left with its `or` undecided.
+        if (!empty && is_union) c.split_in = chart.u;
         continue;
       }
       std::vector<StarConstraint> base = faces;
