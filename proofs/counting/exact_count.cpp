@@ -32,7 +32,7 @@ const char* open_reason_name(OpenReason r) {
     case OpenReason::Adjacency: return "adjacency neither joined nor refuted";
     case OpenReason::NotReached: return "not decided before the stop";
     case OpenReason::ConstraintBoundary:
-      return "constraint boundary (an 'or' of two atoms or more undecided on the box)";
+      return "constraint boundary (an 'or' left undecided on the box)";
   }
   return "?";
 }
@@ -429,8 +429,9 @@ class Counter {
         c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint, CountCellRecord::NoPoint});
       return;
     }
-    // The constraints on the box as fitted (C7): False, every piece is empty; an `or` of
-    // Unknown atoms, undecided; else the atoms left are constraints of the pieces.
+    // The constraints on the box as fitted (C7): False, every piece is empty; else the atoms
+    // left are constraints of the pieces (an `or` left: one set of them per term, the piece
+    // their union; too many terms: undecided).
     if (constraint_false(c, classes)) return;
     const ReducedConstraints reduced = reducer_.reduce(ev_, c.box);
     const bool is_union = reduced.outcome == Reduced::Disjunction;
@@ -514,9 +515,11 @@ class Counter {
       bool star = atoms_defined;
       for (size_t t = 0; t < terms.size() && star; ++t) {
         std::vector<StarConstraint> tests = base;
-        for (int k : terms[t])
-          tests.push_back(
-              {reducer_.strict(k) ? StarConstraint::AtomStrict : StarConstraint::AtomClosed, k, 1, 0});
+        for (int k : terms[t]) {
+          const auto kind = reducer_.strict(k) ? StarConstraint::AtomStrict
+                                               : StarConstraint::AtomClosed;
+          tests.push_back({kind, k, 1, 0});
+        }
         star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{}, ws_,
                          star_boxes_, atoms_) == StarVerdict::StarShaped;
       }
@@ -1037,7 +1040,8 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   // The derivatives are added to the DAG before the counter's evaluator exists.
   FactorGradients fg(model, nodes);
   std::unique_ptr<FactorGradients> atoms;
-  if (!model.constraints.empty()) atoms = std::make_unique<FactorGradients>(model, model.constraint_atoms);
+  if (!model.constraints.empty())
+    atoms = std::make_unique<FactorGradients>(model, model.constraint_atoms);
   Counter counter(model, config, fg, atoms.get());
   counter.add_first_cover(solved);
   const long first_cover_boxes = solved.boxes.size();
