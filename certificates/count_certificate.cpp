@@ -58,6 +58,7 @@ const char* empty_word(CountCellRecord::EmptyBy e) {
     case CountCellRecord::NoPoint: return "void";
     case CountCellRecord::Paving: return "paving";
     case CountCellRecord::OtherClass: return "other-class";
+    case CountCellRecord::Constraint: return "constraint";
     case CountCellRecord::NotEmpty: break;
   }
   return "?";

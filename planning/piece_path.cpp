@@ -34,6 +34,11 @@ CountDirectory load_count_directory(const std::string& dir) {
   } catch (const ModelError& e) {
     throw IndexError(what + ": the recorded model does not parse: " + e.what());
   }
+  // Its pieces are star-shaped with the constraints' atoms among their constraints; the
+  // segments proved here know only the factors and faces, and could leave the feasible set.
+  if (!d.model.constraints.empty())
+    throw IndexError(what + ": the count's model has `constraint` statements; `aspects path` "
+                     "does not plan through the pieces of such a count yet");
   if (d.model.vars.size() != d.pieces.nv || uint32_t(d.model.n()) != d.pieces.n)
     throw IndexError(what + ": the recorded model has " + std::to_string(d.model.vars.size()) +
                      " variables, the file " + std::to_string(d.pieces.nv));

@@ -93,7 +93,9 @@ nlohmann::json count_json(const Model& m, const CountResult& r, double eps) {
   j["open_pieces_by_reason"] = {{"no_chart", r.open_by_reason[int(OpenReason::NoChart)]},
                                 {"no_point", r.open_by_reason[int(OpenReason::NoPoint)]},
                                 {"not_star", r.open_by_reason[int(OpenReason::NotStar)]},
-                                {"not_reached", r.open_by_reason[int(OpenReason::NotReached)]}};
+                                {"not_reached", r.open_by_reason[int(OpenReason::NotReached)]},
+                                {"constraint_boundary",
+                                 r.open_by_reason[int(OpenReason::ConstraintBoundary)]}};
   j["first_cover"] = {{"eps", eps}, {"boxes", r.first_cover_boxes},
                       {"separated_lower_bound", r.separation_bound}};
   j["boxes"] = r.cells;
@@ -134,7 +136,12 @@ void print_count_details(std::ostream& out, const Model& m, const CountResult& r
       << r.open_by_reason[int(OpenReason::NoChart)] << " with no chart, "
       << r.open_by_reason[int(OpenReason::NoPoint)] << " with no certified point, "
       << r.open_by_reason[int(OpenReason::NotStar)] << " whose star test failed, "
-      << r.open_by_reason[int(OpenReason::NotReached)] << " not decided before the stop) and "
+      << r.open_by_reason[int(OpenReason::NotReached)] << " not decided before the stop"
+      << (r.open_by_reason[int(OpenReason::ConstraintBoundary)]
+              ? ", " + std::to_string(r.open_by_reason[int(OpenReason::ConstraintBoundary)]) +
+                    " on a constraint boundary"
+              : std::string())
+      << ") and "
       << b.open_adjacencies << " undecided adjacency(ies) between components; "
       << "the refinement ended: " << count_stop_name(r.stop) << '\n';
   for (const OpenPlace& pl : r.open)

@@ -9,6 +9,7 @@
 #include "counting/factor_gradients.h"
 #include "model/model.h"
 #include "results/count_pieces.h"
+#include "results/result_index.h"
 #include "piece_path.h"
 
 using namespace aspects;
@@ -110,4 +111,24 @@ TEST(PiecePath, ForgedPieceIsProvedAgainAndRefused) {
   EXPECT_EQ(r.outcome, PiecePathOutcome::ProofFailed);
   EXPECT_NE(r.failure.find("piece of class - was not proved connected again"), std::string::npos)
       << r.failure;
+}
+
+// A constrained model's count (its pieces star-shaped with the constraints' atoms among their
+// constraints) is not planned through: the segments proved here know only factors and faces.
+TEST(PiecePath, ACountWithConstraintsIsRefused) {
+  Model m = load_model(std::string(ASPECTS_TEST_MODELS_DIR) + "/count_circle_closed.robot");
+  CountConfig cfg;
+  cfg.keep_records = true;
+  const CountResult r = count_aspects(m, cfg);
+  ASSERT_TRUE(r.bounds.exact());
+  const CountPieces P = count_pieces_of(m, r, cfg.eps, working_precision());
+  const std::string dir = testing::TempDir() + "/constrained_count";
+  std::filesystem::create_directories(dir);
+  write_count_pieces(dir + "/" + kCountPiecesName, P);
+  try {
+    load_count_directory(dir);
+    FAIL() << "a constrained count's pieces were loaded";
+  } catch (const IndexError& e) {
+    EXPECT_NE(std::string(e.what()).find("`constraint` statements"), std::string::npos) << e.what();
+  }
 }

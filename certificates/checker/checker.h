@@ -255,6 +255,9 @@ class Evaluator {
   bool eval(const std::vector<int>& prog, const Ival* box, Mode mode);
   // Kleene truth of the conjunction of every constraint on box: 0 False, 1 Unknown, 2 True.
   int feasible(const Ival* box);
+  // Kleene truth of formula f on the box of the last eval() of all_atoms (count_check.cpp
+  // reduces the constraints on a box with it).
+  int formula_truth(int f) const { return truth(f); }
   // Proof-mode values and derivatives w.r.t. the variables whose bit is set in `dirs`.
   bool eval_ad(const std::vector<int>& prog, const Ival* box, uint64_t dirs);
   const Ival& val(int id) const { return val_[id]; }

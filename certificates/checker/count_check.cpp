@@ -229,6 +229,10 @@ void CountCheck::piece() {
         reject("empty by signs: no factor's enclosure excludes the class" + c_.show(cell.box));
     } else if (proof == "paving") {
       if (!paving(cell, cls)) reject("empty by paving: a part could not be cleared" + c_.show(cell.box));
+    } else if (proof == "constraint") {
+      Dnf terms;
+      if (reduce(ivals(cell.box), terms) != Reduced::False)
+        reject("empty by a constraint: no constraint is False on the box" + c_.show(cell.box));
     } else if (proof == "other-class") {
       cell.other_class |= Mask(1) << cls;  // checked once every piece is read
     } else {
@@ -421,7 +425,6 @@ void CountCheck::run() {
   if (c_.p > kMaxCountFactors) reject("a count certificate has at most 6 factors");
   for (const Factor& f : c_.factors)
     if (f.kind == Factor::User) reject("a count certificate cannot rest on a user factor");
-  if (!c_.m.constraints.empty()) reject("a count certificate's model has no constraint");
   const int64_t total = c_.rd.expect({"count"}, 2).integer();
   first_ = long(c_.rd.integer());
   if (first_ != long(c_.R.size())) reject("count: the first cover is the tree's output boxes");

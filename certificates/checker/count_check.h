@@ -22,6 +22,7 @@ constexpr int kMaxCountFactors = 6;  // 2^6 classes, one bit each in a Mask
 // part of any proof. Above the engine's own (8000 and 4000), whose arithmetic differs.
 constexpr long kStarParts = 1L << 16;
 constexpr long kPavingParts = 1L << 16;
+constexpr size_t kMaxTerms = 16;  // terms of a reduced disjunction, each one star test
 
 class CountCheck {
  public:
@@ -84,6 +85,16 @@ class CountCheck {
   bool refute(const Box& b);
   bool no_class(std::vector<Ival> b, Mask cls, int depth, long& budget);
   bool factors(const std::vector<Ival>& box, std::vector<Ival>& out);
+  // The constraints on box b (FORMAT.md, "Counting", C7): False; True; Atoms (`terms` holds
+  // one term: atom formula ids whose conjunction is what is left); Disjunction (an `or` of
+  // two Unknown disjuncts or more is left: `terms`, at most kMaxTerms, whose disjunction is
+  // what is left; empty when there would be more).
+  enum class Reduced { False, True, Atoms, Disjunction };
+  using Dnf = std::vector<std::vector<int>>;
+  Reduced reduce(const std::vector<Ival>& b, Dnf& terms);
+  bool reduce_formula(int f, Dnf& dnf);
+  // Every constraint True on b.
+  bool feasible(const std::vector<Ival>& b);
   Mask excluded(const Box& b);
   Mask excluded(const std::vector<Ival>& b);
   bool point(const Box& box, const std::vector<int>& w, const std::vector<double>& u,
@@ -98,6 +109,8 @@ class CountCheck {
   bool graph(const Cell& cell, Mask cls);
   bool star(const Cell& cell, Mask cls, const std::vector<int>& w, const std::vector<double>& v,
             const Box& hint);
+  bool star_term(const Cell& cell, Mask cls, const std::vector<int>& w,
+                 const std::vector<double>& v, const Box& hint, const std::vector<int>& atoms);
   bool factor_gradients(const std::vector<Ival>& b, std::vector<std::vector<Ival>>& grad);
   bool implicit_jacobian(const std::vector<Ival>& b, const std::vector<int>& w,
                          std::vector<Ival>& X);

@@ -48,7 +48,7 @@ bool CountCheck::graph(const Cell& cell, Mask cls) {
   if (!factors(ivals(cell.box), g)) return false;
   for (int i = 0; i < c_.p; ++i)
     if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) return false;
-  return true;
+  return feasible(ivals(cell.box));  // the whole graph feasible
 }
 
 // ∂g_i/∂x_v for every factor i over b, from the Jacobian's nodes and their AD: for a
@@ -171,13 +171,30 @@ bool CountCheck::implicit_jacobian(const std::vector<Ival>& b, const std::vector
 // most 8192 parts).
 bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
                       const std::vector<double>& v, const Box& hint) {
+  // The model's constraints on the box (C7): False, or an `or` left with more terms than
+  // kMaxTerms: not tested; else the piece is the union over the terms of the graph over
+  // {u : the factors, the faces and the term's atoms hold}, star-shaped about v when each is.
+  Dnf terms;
+  const Reduced reduced = reduce(ivals(cell.box), terms);
+  if (reduced == Reduced::False || (reduced == Reduced::Disjunction && terms.empty())) return false;
+  if (reduced == Reduced::True) terms = {{}};
+  for (const std::vector<int>& atoms : terms)
+    if (!star_term(cell, cls, w, v, hint, atoms)) return false;
+  return true;
+}
+
+// One term: the star-shaped test with the term's atoms (formula ids) among the constraints.
+bool CountCheck::star_term(const Cell& cell, Mask cls, const std::vector<int>& w,
+                           const std::vector<double>& v, const Box& hint,
+                           const std::vector<int>& atoms) {
   if (cell.w.empty() || w != cell.w || !inside_root(cell.box)) return false;
   std::vector<int> uv;
   for (int x = 0; x < nv_; ++x)
     if (std::find(w.begin(), w.end(), x) == w.end()) uv.push_back(x);
   struct Constraint {
-    int kind;  // 0 factor, 1 lower face, 2 upper face
-    int index;
+    int kind;  // 0 factor, 1 lower face, 2 upper face, 3 strict atom, 4 closed atom
+    int index;  // the factor, the chart's w_j, or the atom's formula
+    bool strict() const { return kind == 0 || kind == 3; }
   };
   std::vector<Constraint> cs;
   std::vector<Ival> g;
@@ -188,13 +205,36 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
     if (crosses(cell, j, false)) cs.push_back({1, j});
     if (crosses(cell, j, true)) cs.push_back({2, j});
   }
+  // Each atom of the term is one more constraint, strict or closed.
+  for (int f : atoms) cs.push_back({c_.m.formulas[f].strict ? 3 : 4, f});
+  auto atom_values = [&](const std::vector<Ival>& b) {
+    limit();
+    return c_.ev->eval(c_.ev->all_atoms, b.data(), Mode::Proof);
+  };
+  if (!atoms.empty()) {
+    // Continuous on the graph over U: every atom defined on U × (W̃ ∩ the chart's image).
+    std::vector<Ival> all = ivals(cell.box);
+    for (int j = 0; j < n_; ++j) {
+      all[w[j]].set(cell.w_tilde[2 * j], cell.w_tilde[2 * j + 1]);
+      if (!all[w[j]].meet(cell.range[j])) return false;
+    }
+    if (!atom_values(all)) return false;
+  }
   // The centre: a point of the piece with every constraint > 0 there.
   std::vector<Ival> wv;
   if (!point(cell.box, w, v, hint, cls, &wv)) return false;
   for (const Constraint& c : cs) {
-    const int x = c.kind ? w[c.index] : 0;
+    const int x = c.kind == 1 || c.kind == 2 ? w[c.index] : 0;
     if (c.kind == 1 && cmp(wv[c.index], Lo, cell.box[2 * x]) <= 0) return false;
     if (c.kind == 2 && cmp(wv[c.index], Hi, cell.box[2 * x + 1]) >= 0) return false;
+  }
+  if (!atoms.empty()) {
+    std::vector<Ival> at(nv_);
+    for (int k = 0; k < n_; ++k) at[uv[k]].set(v[k], v[k]);
+    for (int j = 0; j < n_; ++j) at[w[j]] = wv[j];
+    if (!atom_values(at)) return false;
+    for (const Constraint& c : cs)
+      if (c.kind >= 3 && c_.ev->val(c_.m.formulas[c.index].expr).sign() <= 0) return false;
   }
   std::vector<Box> stack{cell.box};
   long parts = 0;
@@ -209,6 +249,7 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
     std::vector<Ival> b = ivals(z);
     if (!narrow_w(cell, b)) continue;  // no point of the graph over this part
     const bool defined = factors(b, g);
+    const bool atoms_defined = !atoms.empty() && atom_values(b);
     bool negative = false, strict_can_be_positive = true;
     for (size_t k = 0; k < cs.size(); ++k) {
       const Constraint& c = cs[k];
@@ -220,6 +261,13 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
         psi[k] = g[c.index];
         if (!((cls >> c.index) & 1)) neg(psi[k], psi[k]);
         if (psi[k].end_sign(Hi) <= 0) strict_can_be_positive = false;
+      } else if (c.kind >= 3) {
+        if (!atoms_defined) {
+          psi[k].entire();
+          continue;
+        }
+        psi[k] = c_.ev->val(c_.m.formulas[c.index].expr);
+        if (c.kind == 3 && psi[k].end_sign(Hi) <= 0) strict_can_be_positive = false;
       } else {
         const double bound = cell.box[2 * w[c.index] + (c.kind == 2)];
         t.set(bound, bound);
@@ -232,7 +280,7 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
     bool cleared = true, have_x = false, x_ok = false, have_g = false, g_ok = false;
     for (size_t k = 0; k < cs.size() && cleared; ++k) {
       const Constraint& c = cs[k];
-      if (c.kind && !strict_can_be_positive) continue;  // case (ii) impossible here
+      if (!c.strict() && !strict_can_be_positive) continue;  // case (ii) impossible here
       if (psi[k].sign() > 0) continue;                  // ≠ 0 on the part
       if (!have_x) have_x = true, x_ok = implicit_jacobian(b, w, X);
       cleared = false;
@@ -249,6 +297,19 @@ bool CountCheck::star(const Cell& cell, Mask cls, const std::vector<int>& w,
             sub(gr[k2], gr[k2], t);
           }
           if (!positive) neg(gr[k2], gr[k2]);
+        }
+      } else if (c.kind >= 3) {
+        // ∂_u g − ∂_w g·X, by the checker's AD of the atom's expression (none where it is
+        // not differentiable: min, max, abs at 0).
+        limit();
+        if (!c_.ev->eval_ad(c_.ev->all_atoms, b.data(), ~uint64_t(0) >> (64 - nv_))) break;
+        const int e = c_.m.formulas[c.index].expr;
+        for (int k2 = 0; k2 < n_; ++k2) {
+          gr[k2] = c_.ev->der(e, uv[k2]);
+          for (int j = 0; j < n_; ++j) {
+            mul(t, c_.ev->der(e, w[j]), X[j * n_ + k2]);
+            sub(gr[k2], gr[k2], t);
+          }
         }
       } else {
         for (int k2 = 0; k2 < n_; ++k2) {  // ∇w_j = −X_j·
@@ -337,6 +398,7 @@ void CountCheck::joined() {
     for (int i = 0; i < c_.p; ++i)
       if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1))
         reject("joined: a factor's sign on the bridge is not the class's");
+    if (!feasible(box)) reject("joined: a constraint is not True on the bridge");
   }
   joined_[{a, b}] |= Mask(1) << cls;
 }

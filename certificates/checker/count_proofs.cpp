@@ -135,6 +135,71 @@ bool CountCheck::factors(const std::vector<Ival>& box, std::vector<Ival>& out) {
   return true;
 }
 
+bool CountCheck::feasible(const std::vector<Ival>& b) {
+  limit();
+  return c_.ev->feasible(b.data()) == 2;
+}
+
+// Kleene's truth of each atom on the box (eval.cpp) decides the formula at every point of the
+// box where it is True or False; what is left of an Unknown formula, as a disjunction of
+// conjunctions of atoms: an atom's is itself, an `and`'s the products of its Unknown
+// conjuncts' terms, an `or`'s the union of its Unknown disjuncts' terms. False: too many.
+namespace {
+std::vector<std::vector<int>> dnf_product(const std::vector<std::vector<int>>& a,
+                                          const std::vector<std::vector<int>>& b) {
+  std::vector<std::vector<int>> out;
+  for (const auto& x : a)
+    for (const auto& y : b) {
+      std::vector<int> t = x;
+      t.insert(t.end(), y.begin(), y.end());
+      std::sort(t.begin(), t.end());
+      t.erase(std::unique(t.begin(), t.end()), t.end());
+      out.push_back(std::move(t));
+    }
+  return out;
+}
+}  // namespace
+
+bool CountCheck::reduce_formula(int f, Dnf& dnf) {
+  const Formula& F = c_.m.formulas[f];
+  if (F.kind == Formula::Atom) {
+    dnf = {{f}};
+    return true;
+  }
+  const bool is_and = F.kind == Formula::And;
+  dnf.clear();
+  if (is_and) dnf = {{}};
+  for (int k : F.kids) {
+    if (c_.ev->formula_truth(k) != 1) continue;  // True conjunct, False disjunct: dropped
+    Dnf kid;
+    if (!reduce_formula(k, kid)) return false;
+    if (is_and) dnf = dnf_product(dnf, kid);
+    else dnf.insert(dnf.end(), kid.begin(), kid.end());
+    if (dnf.size() > kMaxTerms) return false;
+  }
+  return true;
+}
+
+CountCheck::Reduced CountCheck::reduce(const std::vector<Ival>& b, Dnf& terms) {
+  terms.clear();
+  if (c_.m.constraints.empty()) return Reduced::True;
+  limit();
+  if (c_.ev->feasible(b.data()) == 0) return Reduced::False;  // evaluates every atom on b
+  Dnf all{{}};
+  bool unknown = false, fits = true;
+  for (int c : c_.m.constraints) {
+    if (c_.ev->formula_truth(c) != 1) continue;  // True (none is False)
+    unknown = true;
+    Dnf d;
+    fits = fits && reduce_formula(c, d);
+    if (fits) all = dnf_product(all, d);
+    fits = fits && all.size() <= kMaxTerms;
+  }
+  if (!unknown) return Reduced::True;
+  if (fits) terms = std::move(all);
+  return fits && terms.size() == 1 ? Reduced::Atoms : Reduced::Disjunction;
+}
+
 // The classes no point of the box can have: some factor's enclosure on the box is ≤ 0
 // where the class needs it > 0, or ≥ 0 where it needs it < 0.
 Mask CountCheck::excluded(const std::vector<Ival>& b) {
@@ -201,6 +266,8 @@ bool CountCheck::point(const Box& box, const std::vector<int>& w, const std::vec
       if (!factors(b, g)) return false;
       for (int i = 0; i < c_.p; ++i)
         if (g[i].sign() != ((cls >> i) & 1 ? 1 : -1)) return false;
+      // A feasible point: every constraint True on (u, H).
+      if (!feasible(b)) return false;
       if (at) *at = y;
       return true;
     }
@@ -279,6 +346,8 @@ bool CountCheck::paving(const Cell& cell, Mask cls) {
       cleared = !b[v].meet(box_w);
     }
     if (!cleared) cleared = (excluded(b) >> cls) & 1;
+    // No feasible point over the part: a constraint False on it.
+    if (!cleared && !c_.m.constraints.empty()) cleared = c_.ev->feasible(b.data()) == 0;
     if (cleared) continue;
     if (!halve_widest_u(cell, uv, 1e-9, std::move(z), stack)) return false;
   }

@@ -57,10 +57,20 @@ bool newton_w(ModelEvaluator& ev, Box& pt, const Box& box, const std::vector<int
 }  // namespace
 
 ClassPointSearch::ClassPointSearch(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
-                                   const std::vector<int>& w_vars, int per_axis)
+                                   const std::vector<int>& w_vars, int per_axis,
+                                   const PointConstraints* constraints)
     : ev_(ev), fg_(fg), box_(box), u_vars_(chart_complement(ev.model(), w_vars)),
-      w_vars_(w_vars), per_axis_(per_axis), pt_(box) {
+      w_vars_(w_vars), per_axis_(per_axis), pc_(constraints), pt_(box) {
   const int n = ev.n(), p = fg.factors();
+  if (pc_ && pc_->atoms) {
+    atom_scale_.assign(pc_->which.size(), 1.0);
+    if (pc_->atoms->values(ev, box, values_))
+      for (size_t k = 0; k < pc_->which.size(); ++k) {
+        const Interval& a = values_[pc_->which[k]];
+        const double s = std::max(std::fabs(a.lo_down()), std::fabs(a.hi_up()));
+        if (s > 0 && std::isfinite(s)) atom_scale_[k] = s;
+      }
+  }
   // Scales of the factors over the box, to compare their margins with the faces'.
   scale_.assign(p, 1.0);
   if (fg.values(ev, box, values_))
@@ -110,6 +120,11 @@ bool ClassPointSearch::sample(std::vector<double> u, const std::vector<double>* 
     for (int j = 0; j < n; ++j) {
       const double lo = box_[w_vars_[j]].lo_down(), hi = box_[w_vars_[j]].hi_up();
       if (hi > lo) out.face = std::min(out.face, std::min(out.w[j] - lo, hi - out.w[j]) / (hi - lo));
+    }
+    if (pc_ && pc_->atoms && !pc_->which.empty()) {
+      ok = pc_->atoms->values(ev_, pt_, values_);
+      for (size_t k = 0; ok && k < pc_->which.size(); ++k)
+        out.face = std::min(out.face, values_[pc_->which[k]].mid() / atom_scale_[k]);
     }
   }
   for (int j = 0; j < n; ++j) pt_[w_vars_[j]] = box_[w_vars_[j]];
@@ -186,6 +201,8 @@ bool ClassPointSearch::prove(const Sample& s, uint32_t cls, HsWorkspace& ws, Cla
     const bool positive = (cls >> i) & 1;
     if (!(positive ? values_[i].certainly_pos() : values_[i].certainly_neg())) return false;
   }
+  // A feasible point: every constraint True on it (the atoms True on the box among them).
+  if (pc_ && pc_->check && pc_->check->evaluate(z) != Truth::True) return false;
   out.u_vars = u_vars_;
   out.w_vars = w_vars_;
   out.u = s.u;
@@ -195,8 +212,9 @@ bool ClassPointSearch::prove(const Sample& s, uint32_t cls, HsWorkspace& ws, Cla
 
 PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
                               const std::vector<int>& w, uint32_t cls, HsWorkspace& ws,
-                              ClassPoint& out, int per_axis) {
-  return ClassPointSearch(ev, fg, box, w, per_axis).find(cls, ws, out);
+                              ClassPoint& out, int per_axis,
+                              const PointConstraints* constraints) {
+  return ClassPointSearch(ev, fg, box, w, per_axis, constraints).find(cls, ws, out);
 }
 
 }  // namespace aspects

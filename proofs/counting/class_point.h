@@ -11,6 +11,7 @@
 
 #include "counting/chart.h"
 #include "counting/factor_gradients.h"
+#include "model/constraints.h"
 
 namespace aspects {
 
@@ -22,6 +23,16 @@ struct ClassPoint {
 
 enum class PointVerdict : uint8_t { Found, NotFound };
 
+// With constraints, a point must satisfy every one, certainly: `check` must find them all
+// True on (u, the enclosure of w) (model/constraints.h). `atoms` (the atoms' gradients'
+// values, indices `which`) are the atoms left Unknown on the box: a choice of the sample
+// deepest in them too.
+struct PointConstraints {
+  ConstraintChecker* check = nullptr;
+  const FactorGradients* atoms = nullptr;
+  std::vector<int> which;
+};
+
 // The search for the points of every class in one box and chart: the grid's u-points and
 // their w (Newton in doubles) do not depend on the class, so they are computed once and
 // each class is then a choice among them (then a climb, then the proof).
@@ -29,7 +40,8 @@ class ClassPointSearch {
  public:
   // w_vars: the chart's w (the unknowns). per_axis: grid points per u-axis.
   ClassPointSearch(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
-                   const std::vector<int>& w_vars, int per_axis);
+                   const std::vector<int>& w_vars, int per_axis,
+                   const PointConstraints* constraints = nullptr);
   // cls: bit i set when factor i is positive.
   PointVerdict find(uint32_t cls, HsWorkspace& ws, ClassPoint& out);
 
@@ -37,7 +49,8 @@ class ClassPointSearch {
   struct Sample {
     std::vector<double> u, w;
     std::vector<double> g;  // the factors at (u, w), each over its scale on the box
-    double face = 0;        // the least distance to a face of W, over W's width
+    double face = 0;        // the least distance to a face of W, over W's width, and to the
+                            // zero of an atom left Unknown, over its scale
   };
   bool sample(std::vector<double> u, const std::vector<double>* start, Sample& out);
   double margin(const Sample& s, uint32_t cls) const;
@@ -48,7 +61,9 @@ class ClassPointSearch {
   const Box& box_;
   std::vector<int> u_vars_, w_vars_;
   int per_axis_;
+  const PointConstraints* pc_;
   std::vector<double> scale_;  // per factor: its magnitude over the box (1 if unknown)
+  std::vector<double> atom_scale_;  // per atom of pc_->which, likewise
   std::vector<Sample> grid_;
   Box pt_;
   std::vector<Interval> values_;
@@ -57,6 +72,7 @@ class ClassPointSearch {
 // One class: ClassPointSearch(...).find(cls, ...).
 PointVerdict find_class_point(ModelEvaluator& ev, const FactorGradients& fg, const Box& box,
                               const std::vector<int>& w_vars, uint32_t cls, HsWorkspace& ws,
-                              ClassPoint& out, int per_axis = 5);
+                              ClassPoint& out, int per_axis = 5,
+                              const PointConstraints* constraints = nullptr);
 
 }  // namespace aspects

@@ -7,7 +7,8 @@
 namespace aspects {
 
 EmptyVerdict prove_piece_empty(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart,
-                               const Box& box, uint32_t cls, HsWorkspace& ws, long max_boxes) {
+                               const Box& box, uint32_t cls, HsWorkspace& ws, long max_boxes,
+                               ConstraintChecker* constraints) {
   const int n = ev.n(), p = fg.factors();
   std::vector<Interval> values, image;
   std::vector<Box> stack{box};
@@ -25,6 +26,7 @@ EmptyVerdict prove_piece_empty(ModelEvaluator& ev, const FactorGradients& fg, co
     if (fg.values(ev, z, values))
       for (int i = 0; i < p && !cleared; ++i)
         cleared = (cls >> i) & 1 ? values[i].hi_up() <= 0 : values[i].lo_down() >= 0;
+    if (!cleared && constraints) cleared = constraints->evaluate(z) == Truth::False;
     if (cleared) continue;
     if (!bisect_widest_u(chart, box, std::move(z), 1e-6, stack)) return EmptyVerdict::NotProved;
   }

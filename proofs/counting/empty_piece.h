@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "counting/factor_gradients.h"
+#include "model/constraints.h"
 
 namespace aspects {
 
@@ -15,9 +16,10 @@ enum class EmptyVerdict : uint8_t { Empty, NotProved };
 // `box`: the cell's box U × W (a point of the piece is a solution in it; a part of U whose
 // w(u) all leave W is cleared as holding none, as check_cert's paving clears it: a class cut
 // off by a face of W is empty with no factor's sign to show). max_boxes: the paving's budget
-// (check_cert allows more).
+// (check_cert allows more). `constraints` (or null): a part where a constraint is False holds
+// no feasible point, and is cleared too.
 EmptyVerdict prove_piece_empty(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart,
                                const Box& box, uint32_t cls, HsWorkspace& ws,
-                               long max_boxes = 4000);
+                               long max_boxes = 4000, ConstraintChecker* constraints = nullptr);
 
 }  // namespace aspects

@@ -15,6 +15,7 @@
 #include "contractor.h"
 #include "counting/chart.h"
 #include "counting/class_point.h"
+#include "counting/constraint_reduction.h"
 #include "counting/empty_piece.h"
 #include "counting/factor_gradients.h"
 #include "counting/star_test.h"
@@ -30,6 +31,8 @@ const char* open_reason_name(OpenReason r) {
     case OpenReason::NotStar: return "star-shaped test failed";
     case OpenReason::Adjacency: return "adjacency neither joined nor refuted";
     case OpenReason::NotReached: return "not decided before the stop";
+    case OpenReason::ConstraintBoundary:
+      return "constraint boundary (an 'or' left undecided on the box)";
   }
   return "?";
 }
@@ -115,8 +118,11 @@ struct Adj {
 
 class Counter {
  public:
-  Counter(Model& m, const CountConfig& config, const FactorGradients& fg)
-      : m_(m), config_(config), fg_(fg), ev_(m), contractor_(ev_), nv_(int(m.vars.size())) {
+  Counter(Model& m, const CountConfig& config, const FactorGradients& fg,
+          const FactorGradients* atoms)
+      : m_(m), config_(config), fg_(fg), atoms_(atoms), ev_(m), contractor_(ev_),
+        check_(m, ev_), reducer_(m), nv_(int(m.vars.size())) {
+    if (!check_.empty()) feasible_.check = &check_;
     two_pi_ = Interval(0.0);
     mpfi_const_pi(two_pi_.get());
     mpfi_mul_ui(two_pi_.get(), two_pi_.get(), 2);
@@ -340,6 +346,7 @@ class Counter {
     std::vector<uint32_t> classes;
     for (uint32_t s = 0; s < (uint32_t(1) << p); ++s)
       if (!defined || !class_empty(values, s)) classes.push_back(s);
+    if (constraint_false(c, classes)) return;
 
     Chart chart;
     ChartVerdict cv = ChartVerdict::NotProved;
@@ -374,6 +381,15 @@ class Counter {
     const int cut = chart_split_variable(ev_, c.box, domain_width_);
     if (cut >= 0) c.split_in = {cut};
     for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoChart});
+  }
+
+  // No feasible point in the box (a constraint False on it): every piece is empty.
+  bool constraint_false(Cell& c, const std::vector<uint32_t>& classes) {
+    if (check_.empty() || check_.evaluate(c.box) != Truth::False) return false;
+    c.pieces.clear();
+    for (uint32_t s : classes)
+      c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint, CountCellRecord::Constraint});
+    return true;
   }
 
   // U pushed out a little inside the domain, when the chart holds there too: the neighbour
@@ -415,10 +431,31 @@ class Counter {
         c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint, CountCellRecord::NoPoint});
       return;
     }
+    // The constraints on the box as fitted (C7): False, every piece is empty; else the atoms
+    // left are constraints of the pieces (an `or` left: one set of them per term, the piece
+    // their union; too many terms: undecided).
+    if (constraint_false(c, classes)) return;
+    const ReducedConstraints reduced = reducer_.reduce(ev_, c.box);
+    const bool is_union = reduced.outcome == Reduced::Disjunction;
+    if ((is_union && reduced.terms.empty()) || (c.solution && reduced.outcome != Reduced::True)) {
+      for (uint32_t s : classes)
+        c.pieces.push_back({s, PieceState::Undecided, OpenReason::ConstraintBoundary});
+      c.split_in = chart.u;
+      return;
+    }
+    // The piece is the union over the terms of the graph over {u : the factors, the faces
+    // and the term's atoms hold}: star-shaped about v when each is (one centre for all).
+    const std::vector<std::vector<int>> terms =
+        is_union ? reduced.terms : std::vector<std::vector<int>>{reduced.atoms};
+    std::vector<int> atoms;  // every atom of every term: the centre satisfies them all
+    for (const std::vector<int>& t : terms)
+      for (int k : t)
+        if (std::find(atoms.begin(), atoms.end(), k) == atoms.end()) atoms.push_back(k);
+    const OpenReason not_star = is_union ? OpenReason::ConstraintBoundary : OpenReason::NotStar;
     std::vector<Interval> zv;
     const bool zdefined = fg_.values(ev_, c.box, zv);  // the piece lies in the box
     const bool certain = zdefined && all_signs_certain(zv);
-    if (certain && inside) {
+    if (certain && inside && atoms.empty()) {
       // Every factor has one sign on the graph over U (connected, nonempty): one class.
       uint32_t cls = 0;
       for (int i = 0; i < p; ++i) cls |= uint32_t(zv[i].certainly_pos()) << i;
@@ -432,7 +469,7 @@ class Counter {
     if (c.solution) {
       // The graph is connected and every factor nonzero on it (P2): it lies in one class,
       // the class of any of its points.
-      ClassPointSearch points(ev_, fg_, c.box, chart.w, 1);
+      ClassPointSearch points(ev_, fg_, c.box, chart.w, 1, &feasible_);
       for (uint32_t s : classes) {
         ClassPoint pt;
         if (points.find(s, ws_, pt) != PointVerdict::Found) continue;
@@ -447,28 +484,49 @@ class Counter {
       return;
     }
     std::unique_ptr<ClassPointSearch> points;  // made when a class needs it
+    PointConstraints with_atoms = feasible_;
+    with_atoms.atoms = atoms_;
+    with_atoms.which = atoms;
+    // An atom is a constraint of the star test only where it is continuous: its expression
+    // defined on U × the range of w.
+    std::vector<Interval> av;
+    const bool atoms_defined = atoms.empty() || (atoms_ && atoms_->values(ev_, z, av));
     for (uint32_t s : classes) {
       if (zdefined && class_empty(zv, s)) {
         c.pieces.push_back({s, PieceState::Empty, OpenReason::NoPoint, CountCellRecord::Signs});
         continue;
       }
       ClassPoint centre;
-      if (!points) points = std::make_unique<ClassPointSearch>(ev_, fg_, c.box, chart.w, 3);
+      if (!points)
+        points = std::make_unique<ClassPointSearch>(ev_, fg_, c.box, chart.w, 3, &with_atoms);
       if (points->find(s, ws_, centre) != PointVerdict::Found) {
-        const bool empty = prove_piece_empty(ev_, fg_, chart, c.box, s, ws_) == EmptyVerdict::Empty;
+        const bool empty =
+            prove_piece_empty(ev_, fg_, chart, c.box, s, ws_, 4000,
+                              check_.empty() ? nullptr : &check_) == EmptyVerdict::Empty;
         c.pieces.push_back({s, empty ? PieceState::Empty : PieceState::Undecided,
-                            OpenReason::NoPoint,
+                            is_union ? OpenReason::ConstraintBoundary : OpenReason::NoPoint,
                             empty ? CountCellRecord::Paving : CountCellRecord::NotEmpty});
+        // No centre in every term: bisected in u, as a box left with its `or` undecided.
+        if (!empty && is_union) c.split_in = chart.u;
         continue;
       }
-      std::vector<StarConstraint> tests = faces;
+      std::vector<StarConstraint> base = faces;
       for (int i = 0; i < p; ++i)
         if (!zdefined || !(zv[i].certainly_pos() || zv[i].certainly_neg()))
-          tests.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
-      const bool star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{},
-                                  ws_, star_boxes_) == StarVerdict::StarShaped;
+          base.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
+      bool star = atoms_defined;
+      for (size_t t = 0; t < terms.size() && star; ++t) {
+        std::vector<StarConstraint> tests = base;
+        for (int k : terms[t]) {
+          const auto kind = reducer_.strict(k) ? StarConstraint::AtomStrict
+                                               : StarConstraint::AtomClosed;
+          tests.push_back({kind, k, 1, 0});
+        }
+        star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{}, ws_,
+                         star_boxes_, atoms_) == StarVerdict::StarShaped;
+      }
       c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
-                          OpenReason::NotStar, CountCellRecord::NotEmpty, centre,
+                          not_star, CountCellRecord::NotEmpty, centre,
                           star ? CountCellRecord::Star : CountCellRecord::NotConnected});
       if (!star) c.split_in = chart.u;
     }
@@ -570,9 +628,17 @@ class Counter {
           if (face[v].lo_down() == face[v].hi_up()) return false;
         return true;
       });
+      // A witness must be feasible: a point where every constraint is True.
+      PointConstraints pc = feasible_;
+      if (!check_.empty()) {
+        const ReducedConstraints r = reducer_.reduce(ev_, face);
+        if (r.outcome == Reduced::False) continue;
+        pc.atoms = atoms_;
+        pc.which = r.atoms;
+      }
       ClassPoint pt;
       for (const std::vector<int>& w : charts)
-        if (find_class_point(ev_, fg_, face, w, cls, ws_, pt, 3) == PointVerdict::Found) {
+        if (find_class_point(ev_, fg_, face, w, cls, ws_, pt, 3, &pc) == PointVerdict::Found) {
           proof.shift = k;
           proof.point = pt;
           return AdjacencyState::Joined;
@@ -610,6 +676,8 @@ class Counter {
         if (!periodic_[v] && !m_.vars[v].domain.contains(z[v])) in_domain = false;
       }
       if (!in_domain || !fg_.values(ev_, z, values)) continue;
+      // The whole graph feasible: every constraint True on U_C × its range.
+      if (!check_.empty() && check_.evaluate(z) != Truth::True) continue;
       bool all = true;
       for (size_t i = 0; i < values.size(); ++i)
         all = all && ((cls >> i) & 1 ? values[i].certainly_pos() : values[i].certainly_neg());
@@ -624,6 +692,8 @@ class Counter {
     for (const std::vector<int>& k : e.shifts) {
       if (!outer_meet(cells_[e.a].box, cells_[e.b].box, k, face)) continue;
       if (contractor_.contract(face)) continue;  // no solution in the closed intersection
+      // No feasible point in it.
+      if (!check_.empty() && check_.evaluate(face) == Truth::False) continue;
       if (fg_.values(ev_, face, values) && class_empty(values, cls)) continue;
       return AdjacencyState::Undecided;
     }
@@ -926,8 +996,12 @@ class Counter {
   Model& m_;
   const CountConfig& config_;
   const FactorGradients& fg_;
+  const FactorGradients* atoms_;  // the constraints' atoms (null without constraints)
   ModelEvaluator ev_;
   EquationContractor contractor_;
+  ConstraintChecker check_;
+  ConstraintReducer reducer_;
+  PointConstraints feasible_;  // every point feasible (check_ when there are constraints)
   CheckerGapContractor gap_{contractor_};
   long first_cover_ = 0;
   HsWorkspace ws_;
@@ -950,10 +1024,6 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
     throw std::invalid_argument(
         "count: models with `factor` statements are not counted yet (a user factor may vanish "
         "at nonsingular configurations, so its classes need not be the aspects' classes)");
-  if (!model.constraints.empty())
-    throw std::invalid_argument(
-        "count: models with `constraint` statements are not counted yet (the pieces would "
-        "need the constraints' boundaries as factors)");
   const auto start = std::chrono::steady_clock::now();
   AspectsConfig ac;
   ac.eps = config.eps;
@@ -973,7 +1043,10 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   for (const Factor& f : solved.factors) nodes.push_back(f.node);
   // The derivatives are added to the DAG before the counter's evaluator exists.
   FactorGradients fg(model, nodes);
-  Counter counter(model, config, fg);
+  std::unique_ptr<FactorGradients> atoms;
+  if (!model.constraints.empty())
+    atoms = std::make_unique<FactorGradients>(model, model.constraint_atoms);
+  Counter counter(model, config, fg, atoms.get());
   counter.add_first_cover(solved);
   const long first_cover_boxes = solved.boxes.size();
   // The counter holds its own copies: the solve's go before the refinement needs memory.

@@ -40,7 +40,8 @@ struct CountCellRecord {
   int32_t child[2] = {-1, -1};
   bool alive = true;
   // The pieces of an alive cell, with what shows each nonempty one (a u-point of W_s).
-  enum EmptyBy : uint8_t { NotEmpty, Signs, NoPoint, Paving, OtherClass };
+  // Constraint: a constraint is False on the current box (no feasible point in it).
+  enum EmptyBy : uint8_t { NotEmpty, Signs, NoPoint, Paving, OtherClass, Constraint };
   // Connected: the whole graph over U (a solution box, or a chart whose range lies in the
   // box with every factor of one sign), or star-shaped about its point.
   enum ConnectedBy : uint8_t { NotConnected, Graph, Star };
@@ -109,7 +110,9 @@ enum class OpenReason : uint8_t {
   NotStar,     // the star-shaped test failed about the point found
   Adjacency,   // an adjacency between two components of H, neither joined nor refuted
   NotReached,  // the refinement stopped before deciding the box
+  ConstraintBoundary,  // an `or` of two constraint atoms or more is Unknown on the box
 };
+constexpr int kOpenReasons = 6;
 const char* open_reason_name(OpenReason r);
 
 // A place that holds the gap between the bounds.
@@ -146,15 +149,16 @@ struct CountResult {
   long first_cover_boxes = 0, cells = 0, pieces = 0, adjacencies = 0;
   long bisections = 0, star_boxes = 0;
   std::vector<OpenPlace> open;  // at most a few, the first found
-  long open_by_reason[5] = {0, 0, 0, 0, 0};  // open pieces (and adjacencies) by OpenReason
+  long open_by_reason[kOpenReasons] = {};  // open pieces (and adjacencies) by OpenReason
   std::vector<std::string> factor_text;
   std::vector<CountRegion> regions;  // the lower bound's components, largest first
   double seconds = 0;
   std::shared_ptr<CountRecords> records;  // with CountConfig::certificate or keep_records
 };
 
-// Refuses (ModelError-free std::invalid_argument) models with `factor` or `constraint`
-// statements: their W_s is not yet what the count decides.
+// Refuses (ModelError-free std::invalid_argument) models with `factor` statements: a user
+// factor may vanish at nonsingular configurations. With `constraint`s the aspects counted are
+// the components of the feasible nonsingular configurations (FORMAT.md, "Counting", C7).
 CountResult count_aspects(Model& model, const CountConfig& config);
 
 }  // namespace aspects

@@ -9,8 +9,14 @@ namespace aspects {
 namespace {
 
 // ψ over box z (its w-part: an enclosure of w over its u-part); false when undefined.
-bool value(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart, const Box& z,
-           const StarConstraint& c, std::vector<Interval>& values, Interval& psi) {
+bool value(ModelEvaluator& ev, const FactorGradients& fg, const FactorGradients* atoms,
+           const Chart& chart, const Box& z, const StarConstraint& c,
+           std::vector<Interval>& values, Interval& psi) {
+  if (c.kind == StarConstraint::AtomStrict || c.kind == StarConstraint::AtomClosed) {
+    if (!atoms || !atoms->values(ev, z, values)) return false;
+    psi = values[c.index];
+    return true;
+  }
   if (c.kind == StarConstraint::Factor) {
     if (!fg.values(ev, z, values)) return false;
     psi = values[c.index];
@@ -26,9 +32,12 @@ bool value(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart, co
 }
 
 // ∇ψ over z, from X = (∂_w f)^{-1} ∂_u f.
-bool gradient(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart, const Box& z,
-              const StarConstraint& c, const IMatrix& X, std::vector<Interval>& grad) {
+bool gradient(ModelEvaluator& ev, const FactorGradients& fg, const FactorGradients* atoms,
+              const Chart& chart, const Box& z, const StarConstraint& c, const IMatrix& X,
+              std::vector<Interval>& grad) {
   const int n = ev.n();
+  if (c.kind == StarConstraint::AtomStrict || c.kind == StarConstraint::AtomClosed)
+    return atoms && atoms->gradient(ev, chart, z, X, c.index, grad);
   if (c.kind == StarConstraint::Factor) {
     if (!fg.gradient(ev, chart, z, X, c.index, grad)) return false;
     if (c.sign < 0)
@@ -67,7 +76,8 @@ void narrow_w(ModelEvaluator& ev, const Chart& chart, Box& z, HsWorkspace& ws,
 StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart,
                       const Box& box, const std::vector<StarConstraint>& cs,
                       const std::vector<double>& v, const std::vector<Interval>& wv,
-                      const StarLimits& limits, HsWorkspace& ws, long& boxes) {
+                      const StarLimits& limits, HsWorkspace& ws, long& boxes,
+                      const FactorGradients* atoms) {
   const int n = ev.n();
   const size_t nc = cs.size();
   std::vector<Interval> values, grad, image;
@@ -79,7 +89,7 @@ StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart
   for (int k = 0; k < n; ++k) centre[chart.u[k]].set_point(v[k]);
   for (int j = 0; j < n; ++j) centre[chart.w[j]] = wv[j];
   for (size_t c = 0; c < nc; ++c)
-    if (!value(ev, fg, chart, centre, cs[c], values, psi[c]) || !psi[c].certainly_pos()) {
+    if (!value(ev, fg, atoms, chart, centre, cs[c], values, psi[c]) || !psi[c].certainly_pos()) {
       return StarVerdict::NotProved;
     }
 
@@ -104,18 +114,18 @@ StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart
           if (cs[c].sign < 0) mpfi_neg(psi[c].get(), psi[c].get());
         }
       } else {
-        defined[c] = value(ev, fg, chart, z, cs[c], values, psi[c]);
+        defined[c] = value(ev, fg, atoms, chart, z, cs[c], values, psi[c]);
       }
       if (!defined[c]) continue;
       negative = negative || psi[c].certainly_neg();
-      if (cs[c].kind == StarConstraint::Factor && psi[c].hi_up() <= 0)
+      if (strict_constraint(cs[c]) && psi[c].hi_up() <= 0)
         strict_can_be_positive = false;
     }
     if (negative) continue;  // some constraint < 0 on the whole sub-box
     bool cleared = true;
     bool have_x = false, x_ok = false;
     for (size_t c = 0; c < nc && cleared; ++c) {
-      const bool strict = cs[c].kind == StarConstraint::Factor;
+      const bool strict = strict_constraint(cs[c]);
       if (!strict && !strict_can_be_positive) continue;       // case (ii) impossible here
       if (defined[c] && psi[c].certainly_pos()) continue;      // ≠ 0 on the sub-box
       if (!have_x) {
@@ -123,7 +133,7 @@ StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart
         x_ok = fg.implicit_jacobian(ev, chart, z, X);
       }
       cleared = false;
-      if (!x_ok || !gradient(ev, fg, chart, z, cs[c], X, grad)) break;
+      if (!x_ok || !gradient(ev, fg, atoms, chart, z, cs[c], X, grad)) break;
       d.set_point(0.0);
       for (int k = 0; k < n; ++k) {
         mpfi_sub_d(t.get(), z[chart.u[k]].get(), v[k]);

@@ -3,7 +3,12 @@
 //   S = {u ∈ U : φ_i(u) > 0 for the strict constraints, ψ_j(u) ≥ 0 for the closed ones}:
 //  - strict: a factor, φ = s_i·g_i(u, w(u));
 //  - closed: a face of the box's W, ψ = w_j(u) − lo_j or hi_j − w_j(u): where the graph
-//    leaves the box, the piece is the graph over {u : w(u) ∈ W}.
+//    leaves the box, the piece is the graph over {u : w(u) ∈ W};
+//  - a constraint's atom left Unknown on the box (counting/constraint_reduction.h),
+//    a(u) = g(u, w(u)): strict (g > 0) like a factor, closed (g ≥ 0) like a face. The proof
+//    below uses only that every constraint is continuous on U and differentiable where its
+//    gradient is enclosed, which holds for an atom whose expression is defined on U × the
+//    range of w (checked before the test) and differentiable where its derivatives are.
 // S is star-shaped about v (every constraint > 0 at v) when no u ∈ U has every constraint
 // ≥ 0 and either (i) a strict φ_i(u) = 0 with ∇φ_i(u)·(u − v) ≥ 0, or (ii) every strict
 // φ > 0 and a closed ψ_j(u) = 0 with ∇ψ_j(u)·(u − v) ≥ 0.
@@ -32,8 +37,9 @@ enum class StarVerdict : uint8_t {
 };
 
 struct StarConstraint {
-  enum Kind : uint8_t { Factor, WLower, WUpper } kind = Factor;
-  int index = 0;   // Factor: the factor; WLower/WUpper: j, the chart's w_j
+  enum Kind : uint8_t { Factor, WLower, WUpper, AtomStrict, AtomClosed } kind = Factor;
+  int index = 0;   // Factor: the factor; WLower/WUpper: j, the chart's w_j; Atom*: the atom
+                   // (an index into model.constraint_atoms and the atoms' FactorGradients)
   int sign = 1;    // Factor: s_i (strict); the faces are closed
   double bound = 0;  // WLower/WUpper: lo_j or hi_j
 };
@@ -46,11 +52,16 @@ struct StarLimits {
 };
 
 // `box`: U × the chart's range of w (every w(u) lies in it). v: the centre's u (n doubles),
-// wv: an enclosure of w(v). `boxes` counts the paving.
+// wv: an enclosure of w(v). `boxes` counts the paving. `atoms`: the gradients of the
+// constraints' atoms (needed when cs holds an Atom constraint).
 StarVerdict star_test(ModelEvaluator& ev, const FactorGradients& fg, const Chart& chart,
                       const Box& box, const std::vector<StarConstraint>& cs,
                       const std::vector<double>& v,
                       const std::vector<Interval>& wv, const StarLimits& limits, HsWorkspace& ws,
-                      long& boxes);
+                      long& boxes, const FactorGradients* atoms = nullptr);
+
+inline bool strict_constraint(const StarConstraint& c) {
+  return c.kind == StarConstraint::Factor || c.kind == StarConstraint::AtomStrict;
+}
 
 }  // namespace aspects

@@ -663,9 +663,15 @@ def test_count_with_a_round_budget_gives_the_lower_bound_and_the_open_places():
 def test_count_refuses_what_the_command_line_refuses():
     model = aspects.Model.from_string(
         "robot r\npose x in [-2, 2]\ncommand q in [-5, 5]\nequation q - x = 0\n"
-        "factor x + 3\n", "r.robot")
+        "factor x - 1\n", "r.robot")
     with pytest.raises(ValueError, match=r"r\.robot: count: models with `factor`"):
         aspects.count(model)
+    # Constraints are counted (the feasible aspects): the circle with x >= 0.5 keeps two arcs.
+    cut = aspects.Model.from_string(
+        "robot c\npose x in [-2, 2]\ncommand q in [-2, 2]\nequation x^2 + q^2 = 1\n"
+        "constraint x >= 0.5\n", "c.robot")
+    c = aspects.count(cut)
+    assert c.exact and c.lower == c.upper == 2
     with pytest.raises(ValueError, match="rounds must be"):
         aspects.count(PRRP, rounds=0)
     with pytest.raises(ValueError, match="min_width must be"):

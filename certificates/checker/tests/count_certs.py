@@ -30,6 +30,9 @@ CASES = [
     ("bow_tie_neck", os.path.join(MODELS, "count_bow_tie_neck.robot"), "0.5", 3),
     ("bow_tie_pinch", os.path.join(MODELS, "count_bow_tie_pinch.robot"), "0.5", 3),
     ("seam", os.path.join(MODELS, "count_seam.robot"), "0.5", 2),
+    ("circle_closed", os.path.join(MODELS, "count_circle_closed.robot"), "0.5", 2),
+    ("circle_or", os.path.join(MODELS, "count_circle_or.robot"), "0.5", 3),
+    ("circle_union", os.path.join(MODELS, "count_circle_union.robot"), "0.5", 3),
 ]
 
 
@@ -65,6 +68,20 @@ for name, model, eps, count in CASES:
     code2, out2 = check(cert, "--trusted-only")
     if (code2, out2) != (code, out):
         fail("%s: --trusted-only says %s" % (name, out2))
+
+# Two disjuncts' boundaries crossing on the curve: at least 3, no upper bound, verified.
+corner = os.path.join(WORK, "circle_corner.ccert")
+p = subprocess.run([ASPECTS, "count", os.path.join(MODELS, "count_circle_corner.robot"),
+                    "--min-width", "1e-3", "--cert", corner], capture_output=True, text=True)
+first_line = p.stdout.split("\n")[0]
+code, out = check(corner)
+if p.returncode != 0 or not first_line.startswith("at least 3 aspects (certified); no upper bound"):
+    fail("circle_corner: aspects count exited %d: %s" % (p.returncode, first_line))
+elif code != 0 or "checked_lower_bound=3 " not in out or " upper_bound=none " not in out:
+    fail("circle_corner: check_cert exited %d: %s" % (code, out))
+else:
+    certs["circle_corner"] = corner
+    print("ok circle_corner: %s" % re.sub(r"sha256\S+ ", "", out))
 
 
 # ------------------------------------------------------------------ tampering
@@ -292,6 +309,59 @@ def unsplit(lines):
     return out
 
 
+def hexpair(w):
+    return "%s %s" % (float.hex(w - 1e-12), float.hex(w + 1e-12))
+
+
+def disjunction_called_star(lines):
+    # circle_corner: the piece left undecided where both disjuncts are Unknown, claimed
+    # star-shaped about a feasible point of its box (x > 0.6 there): without the
+    # disjunction's check the star test, blind to the constraint, passes.
+    i = first(lines, lambda f: f[0] == "piece" and f[3] == "undecided")
+    cid, cls = lines[i].split(" ")[1:3]
+    fit = lines[first(lines, lambda f: f[:2] == ["fit", cid])].split(" ")
+    w = int(fit[2])
+    box = [float.fromhex(x) for x in fit[5:9]]
+    ulo, uhi = box[2 * (1 - w)], box[2 * (1 - w) + 1]
+    wlo, whi = box[2 * w], box[2 * w + 1]
+    for k in range(1, 200):
+        u = ulo + (uhi - ulo) * k / 200
+        wv = (1 - u * u) ** 0.5
+        x, q = (wv, u) if w == 0 else (u, wv)
+        if wlo < wv < whi and (x > 0.6 + 1e-9 or q > 0.8 + 1e-9):
+            lines[i] = "piece %s %s connected star point %d %s %s" % (cid, cls, w, float.hex(u), hexpair(wv))
+            return lines
+    raise LookupError("no feasible point in the box")
+
+
+def centre_outside_c(lines):
+    # circle_closed: a star piece of a box across x = 0.5 claimed nonempty by a point of the
+    # circle in the box with x = 0.48, outside C (x >= 0.5); no upper bound claimed.
+    for i, l in enumerate(lines):
+        f = l.split(" ")
+        if f[0] != "piece" or f[4] != "star":
+            continue
+        fit = lines[first(lines, lambda g: g[:2] == ["fit", f[1]])].split(" ")
+        box = [float.fromhex(x) for x in fit[5:9]]
+        if not box[0] < 0.48 < box[1] or f[6] != "1":
+            continue
+        q = (1 - 0.48 ** 2) ** 0.5 * (1 if f[2][1] == "+" else -1)
+        if not box[2] < q < box[3]:
+            continue
+        lines[i] = "piece %s %s nonempty - point 1 %s %s" % (f[1], f[2], float.hex(0.48), hexpair(q))
+        j = first(lines, lambda g: g[:2] == ["claim", "count-upper"])
+        lines[j] = "claim count-upper none"
+        return lines
+    raise LookupError("no star piece across x = 0.5")
+
+
+def feasible_called_empty(lines):
+    # circle_closed: a connected piece claimed empty by a constraint (none is False on its box).
+    i = first(lines, lambda f: f[0] == "piece" and f[3] == "connected")
+    lines[i] = " ".join(lines[i].split(" ")[:3] + ["empty", "constraint"])
+    return lines
+
+
 # (certificate, mutation, word of the reason)
 TAMPER = [
     ("prrp", forged_upper, "upper bound"),
@@ -312,6 +382,9 @@ TAMPER = [
     ("prrp", chart_box_grown, "chart"),
     ("prrp", fit_u_shrunk, "does not hold the origin's"),
     ("prrp", fit_u_out_of_root, "leaves the root cell"),
+    ("circle_corner", disjunction_called_star, "star-shaped test fails"),
+    ("circle_closed", centre_outside_c, "point"),
+    ("circle_closed", feasible_called_empty, "empty by a constraint"),
 ]
 
 for name, mutate, word in TAMPER:
