@@ -9,7 +9,7 @@ namespace aspects {
 struct CountOptions {
   std::string model_path;  // empty: the embedded RRRRR
   double eps = 0.5;
-  double min_width = 1e-4;
+  double min_width = 1e-9;
   int rounds = 200;
   double time_limit = 0;
   int threads = 0;

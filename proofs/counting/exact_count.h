@@ -84,7 +84,7 @@ class CertificateSink;
 
 struct CountConfig {
   double eps = 0.5;          // ε of the first cover (a uniform solve); refinement is adaptive
-  double min_width = 1e-4;   // relative to the domain: narrower boxes are not bisected
+  double min_width = 1e-9;   // relative to the domain: narrower boxes are not bisected
   int max_rounds = 200;
   int threads = 1;           // the first cover's search
   StopCondition* stop = nullptr;

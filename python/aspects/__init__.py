@@ -135,7 +135,7 @@ def solve(model, eps=0.1, threads=0, time_limit=None, out=None, progress=None, *
     return result
 
 
-def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-4, rounds=200,
+def count(model, eps=0.5, threads=0, time_limit=None, *, min_width=1e-9, rounds=200,
           out=None):
     """The certified number of aspects of `model`, as `aspects count` computes it; returns a
     CountResult (its .count is the number when lower = upper is certified, else None, and
