@@ -92,11 +92,11 @@ void add_count(CLI::App& app, Commands& c) {
   count->add_option("MODEL", co.model_path, "robot model file; default: the embedded RRRRR five-bar");
   count->add_option("-e,--eps", co.eps, "epsilon of the first cover (refinement is adaptive after it)")
       ->check(kFiniteNumber)
-      ->default_val(0.5);
+      ->default_val(CountOptions{}.eps);  // one source of each default: count_command.h
   count->add_option("--min-width", co.min_width,
                     "do not bisect boxes narrower than this fraction of the domain")
       ->check(kFiniteNumber)
-      ->default_val(1e-4);
+      ->default_val(CountOptions{}.min_width);
   count->add_option("--rounds", co.rounds,
                     "stop after this many rounds of refinement (the bounds reached hold)")
       ->check(CLI::Range(1, 1000000))
