@@ -467,20 +467,7 @@ class Counter {
       return;
     }
     if (c.solution) {
-      // The graph is connected and every factor nonzero on it (P2): it lies in one class,
-      // the class of any of its points.
-      ClassPointSearch points(ev_, fg_, c.box, chart.w, 1, &feasible_);
-      for (uint32_t s : classes) {
-        ClassPoint pt;
-        if (points.find(s, ws_, pt) != PointVerdict::Found) continue;
-        for (uint32_t t : classes)
-          c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
-                              OpenReason::NoPoint,
-                              t == s ? CountCellRecord::NotEmpty : CountCellRecord::OtherClass,
-                              t == s ? pt : ClassPoint{}, CountCellRecord::Graph});
-        return;
-      }
-      for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
+      decide_solution_graph(c, chart, classes);
       return;
     }
     std::unique_ptr<ClassPointSearch> points;  // made when a class needs it
@@ -514,22 +501,47 @@ class Counter {
       for (int i = 0; i < p; ++i)
         if (!zdefined || !(zv[i].certainly_pos() || zv[i].certainly_neg()))
           base.push_back({StarConstraint::Factor, i, (s >> i) & 1 ? 1 : -1, 0});
-      bool star = atoms_defined;
-      for (size_t t = 0; t < terms.size() && star; ++t) {
-        std::vector<StarConstraint> tests = base;
-        for (int k : terms[t]) {
-          const auto kind = reducer_.strict(k) ? StarConstraint::AtomStrict
-                                               : StarConstraint::AtomClosed;
-          tests.push_back({kind, k, 1, 0});
-        }
-        star = star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{}, ws_,
-                         star_boxes_, atoms_) == StarVerdict::StarShaped;
-      }
+      const bool star = atoms_defined && star_in_every_term(chart, z, base, terms, centre);
       c.pieces.push_back({s, star ? PieceState::Connected : PieceState::Nonempty,
                           not_star, CountCellRecord::NotEmpty, centre,
                           star ? CountCellRecord::Star : CountCellRecord::NotConnected});
       if (!star) c.split_in = chart.u;
     }
+  }
+
+  // A solution box: the graph is connected and every factor nonzero on it (P2), so it lies in
+  // one class, the class of any of its points.
+  void decide_solution_graph(Cell& c, const Chart& chart, const std::vector<uint32_t>& classes) {
+    ClassPointSearch points(ev_, fg_, c.box, chart.w, 1, &feasible_);
+    for (uint32_t s : classes) {
+      ClassPoint pt;
+      if (points.find(s, ws_, pt) != PointVerdict::Found) continue;
+      for (uint32_t t : classes)
+        c.pieces.push_back({t, t == s ? PieceState::Connected : PieceState::Empty,
+                            OpenReason::NoPoint,
+                            t == s ? CountCellRecord::NotEmpty : CountCellRecord::OtherClass,
+                            t == s ? pt : ClassPoint{}, CountCellRecord::Graph});
+      return;
+    }
+    for (uint32_t s : classes) c.pieces.push_back({s, PieceState::Undecided, OpenReason::NoPoint});
+  }
+
+  // The piece is the union over the terms of the set where `base` and the term's atoms hold:
+  // star-shaped about `centre` when each term's set is (C7).
+  bool star_in_every_term(const Chart& chart, const Box& z, const std::vector<StarConstraint>& base,
+                          const std::vector<std::vector<int>>& terms, const ClassPoint& centre) {
+    for (const std::vector<int>& term : terms) {
+      std::vector<StarConstraint> tests = base;
+      for (int k : term) {
+        const auto kind = reducer_.strict(k) ? StarConstraint::AtomStrict
+                                             : StarConstraint::AtomClosed;
+        tests.push_back({kind, k, 1, 0});
+      }
+      if (star_test(ev_, fg_, chart, z, tests, centre.u, centre.w, StarLimits{}, ws_,
+                    star_boxes_, atoms_) != StarVerdict::StarShaped)
+        return false;
+    }
+    return true;
   }
 
   // The box as the chart makes it: its W met with the range, with the faces of W the graph
