@@ -47,6 +47,7 @@ CountDirectory load_count_directory(const std::string& dir) {
   for (const Factor& f : determinant_factors(d.model)) {
     texts.push_back(f.text + " (" + f.origin + ")");
     d.factor_nodes.push_back(f.node);
+    d.factor_origins.push_back(f.origin);
   }
   if (texts != d.pieces.factors)
     throw IndexError(what + ": the model's determinant factors are not the count's (written by "

@@ -36,6 +36,7 @@ struct CountDirectory {
   CountPieces pieces;
   Model model;
   std::vector<int> factor_nodes;
+  std::vector<std::string> factor_origins;  // "det Fx", ..., in the factors' order
   std::string directory;
 };
 

@@ -20,22 +20,14 @@ std::string box_text(const OpenPlace& o, const Model& m) {
   return out.str();
 }
 
-// A factor's text ends with its origin in parentheses, "(det Fx)". A long expression (3-RRR*'s
-// det Fx has over 1,000 characters) would bury the report, so only its origin is printed;
+// A factor's text is its expression followed by " (origin)". A long expression (3-RRR*'s det
+// Fx has over 1,000 characters) would bury the report, so only its origin is printed;
 // `--json` keeps the whole text.
-std::string factor_label(const std::string& f) {
+std::string factor_label(const std::string& text, const std::string& origin) {
   constexpr size_t kLongest = 80;
-  if (f.size() <= kLongest || f.empty() || f.back() != ')') return f;
-  // The origin's own parentheses ("diagonal Fq, entry (1,1)"): match the last ')'.
-  size_t open = f.size() - 1;
-  for (int depth = 0; open-- > 0;) {
-    if (f[open] == ')') ++depth;
-    if (f[open] == '(' && depth-- == 0) break;
-  }
-  if (open == std::string::npos || open == 0 || f[open - 1] != ' ') return f;
-  --open;  // at the space before it
-  return f.substr(open + 2, f.size() - open - 3) + " [" + std::to_string(open) +
-         " characters; --json gives it]";
+  const size_t suffix = origin.size() + 3;  // " (" origin ")"
+  if (text.size() <= kLongest || text.size() < suffix) return text;
+  return origin + " [" + std::to_string(text.size() - suffix) + " characters; --json gives it]";
 }
 
 // Where a region lies: the hull of its boxes' pose parts.
@@ -128,7 +120,8 @@ void print_count_details(std::ostream& out, const Model& m, const CountResult& r
   out << "boxes: " << r.cells << ", pieces: " << r.pieces << ", adjacencies: " << r.adjacencies
       << ", rounds: " << r.rounds << ", " << r.seconds << " s\n";
   out << "sign classes over:";
-  for (const std::string& f : r.factor_text) out << "  " << factor_label(f);
+  for (size_t i = 0; i < r.factor_text.size(); ++i)
+    out << "  " << factor_label(r.factor_text[i], r.factor_origin[i]);
   out << '\n';
   print_regions(out, m, r);
   if (b.exact()) return;

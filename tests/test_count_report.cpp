@@ -21,6 +21,7 @@ CountResult two_regions(bool exact) {
   r.bounds.lower = 2;
   r.bounds.upper = exact ? 2 : -1;
   r.factor_text = {"2*x (det Fx)", std::string(90, 'q') + " (diagonal Fq, entry (1,1))"};
+  r.factor_origin = {"det Fx", "diagonal Fq, entry (1,1)"};
   CountRegion a;
   a.cls = 1;  // det Fx > 0, Fq's entry < 0
   a.boxes = 3;

@@ -1068,7 +1068,10 @@ CountResult count_aspects(Model& model, const CountConfig& config) {
   if (config.certificate || config.keep_records) out.records = counter.records();
   out.separation_bound = solved.separation.lower_bound;
   out.first_cover_boxes = first_cover_boxes;
-  for (const Factor& f : solved.factors) out.factor_text.push_back(f.text + " (" + f.origin + ")");
+  for (const Factor& f : solved.factors) {
+    out.factor_text.push_back(f.text + " (" + f.origin + ")");
+    out.factor_origin.push_back(f.origin);
+  }
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -150,7 +150,8 @@ struct CountResult {
   long bisections = 0, star_boxes = 0;
   std::vector<OpenPlace> open;  // at most a few, the first found
   long open_by_reason[kOpenReasons] = {};  // open pieces (and adjacencies) by OpenReason
-  std::vector<std::string> factor_text;
+  std::vector<std::string> factor_text;    // "expression (origin)", as solve prints them
+  std::vector<std::string> factor_origin;  // "det Fx", "diagonal Fq, entry (1,1)", ...
   std::vector<CountRegion> regions;  // the lower bound's components, largest first
   double seconds = 0;
   std::shared_ptr<CountRecords> records;  // with CountConfig::certificate or keep_records

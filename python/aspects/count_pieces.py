@@ -17,7 +17,8 @@ import numpy as np
 class CountPieces:
     """`cell` (the count's box id), `cls` (bit i set: factor i positive), `lo`, `hi` (the
     box, one column per variable, model order) per piece; `join_a`, `join_b` the joined
-    pairs of rows; the count's `lower` and `upper` bounds, `factors`, `variables`,
+    pairs of rows; the count's `lower` and `upper` bounds, `factors` (their texts) and
+    `factor_origins` ("det Fx", ...), `variables`,
     `pose_variables` and `robot`."""
     cell: np.ndarray
     cls: np.ndarray
@@ -28,6 +29,7 @@ class CountPieces:
     lower: int
     upper: Optional[int]
     factors: Tuple[str, ...]
+    factor_origins: Tuple[str, ...]
     variables: Tuple[str, ...]
     pose_variables: Tuple[str, ...]
     robot: str
@@ -38,7 +40,8 @@ class CountPieces:
     def from_arrays(cls, d, directory):
         return cls(np.asarray(d["cell"]), np.asarray(d["cls"]), np.asarray(d["lo"]),
                    np.asarray(d["hi"]), np.asarray(d["join_a"]), np.asarray(d["join_b"]),
-                   d["lower"], d["upper"], tuple(d["factors"]), tuple(d["variables"]),
+                   d["lower"], d["upper"], tuple(d["factors"]), tuple(d["factor_origins"]),
+                   tuple(d["variables"]),
                    tuple(d["pose_variables"]), d["robot"], directory)
 
     @property
@@ -126,7 +129,7 @@ class CountPieces:
                  f"at least {pl.aspects_word(self.lower)} (certified); components of the "
                  f"joined pieces, each inside one aspect")
         fig.suptitle(f"{self.robot}: {claim}\nsign classes over "
-                     f"{', '.join(_origin(f) for f in self.factors)}", fontsize=10)
+                     f"{', '.join(self.factor_origins)}", fontsize=10)
         fig.tight_layout()
         pl.save(fig, out, dpi)
         pl.plt.close(fig)
@@ -146,15 +149,3 @@ class CountPieces:
                 raise ValueError(f"no variable '{v}' (the model's: {', '.join(names)})")
         return names.index(x), names.index(y)
 
-
-def _origin(factor):
-    """A factor's origin, the parenthesised end of its text ("... (diagonal Fq, entry (1,1))"
-    gives "diagonal Fq, entry (1,1)"); the whole text when there is none."""
-    if not factor.endswith(")"):
-        return factor
-    depth = 0
-    for i in range(len(factor) - 1, -1, -1):
-        depth += {")": 1, "(": -1}.get(factor[i], 0)
-        if depth == 0:
-            return factor[i + 1:-1] if i > 0 and factor[i - 1] == " " else factor
-    return factor

@@ -115,6 +115,7 @@ pyb::dict count_pieces_arrays(const std::string& dir) {
   d["join_a"] = pyb::array_t<int64_t>(a.size(), a.data());
   d["join_b"] = pyb::array_t<int64_t>(b.size(), b.data());
   d["factors"] = P.factors;
+  d["factor_origins"] = D.factor_origins;
   d["lower"] = P.lower;
   d["upper"] = P.upper < 0 ? pyb::object(pyb::none()) : pyb::object(pyb::int_(P.upper));
   d["eps"] = P.eps;
